@@ -1,0 +1,32 @@
+/* rfir: map and ground-truth files of textlog.md: `tag <id> <x> <y> [<sx> <sy>]`,
+ * `emitter <id> <x> <y> <z> [<sx> <sy>]`, `landmark <id> <x> <y> [<sx> <sy>]`. */
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rfir::common
+{
+struct TMapEntry
+{
+    enum class Kind { Tag, Emitter, Landmark };
+    Kind kind = Kind::Tag;
+    std::string id;
+    double x = 0, y = 0, z = 0;  //!< z only for emitters
+    std::optional<double> sx, sy;  //!< standard deviations (estimated maps)
+};
+using TMapFile = std::vector<TMapEntry>;
+
+const char* kindName(TMapEntry::Kind k);
+/** True if `id` is a valid textlog ID: [A-Za-z0-9_.:-], 1..64 characters. */
+bool isValidId(const std::string& id);
+
+/** Writes atomically, one record per line, with sx sy when present. */
+void saveMapFile(const std::string& path, const TMapFile& m,
+                 const std::string& headerComment = {});
+/** Reads a map / ground-truth file. Throws std::runtime_error("FILE:LINE: ...")
+ * on a malformed line, an unknown record, a bad ID or a duplicate ID of one kind. */
+TMapFile loadMapFile(const std::string& path);
+
+}  // namespace rfir::common

@@ -1,0 +1,25 @@
+/* rfir: robot paths in the TUM trajectory format (textlog.md outputs):
+ * `t x y z qx qy qz qw`, z = 0, rotation about z only. */
+#pragma once
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <string>
+#include <vector>
+
+namespace rfir::common
+{
+struct TStampedPose2D
+{
+    double t = 0;
+    mrpt::poses::CPose2D pose;
+};
+using TPath2D = std::vector<TStampedPose2D>;
+
+/** Writes atomically. */
+void saveTUM(const std::string& path, const TPath2D& traj);
+/** Reads a TUM file; `#` comments and blank lines skipped. Throws
+ * std::runtime_error("FILE:LINE: what is wrong") on a malformed line. */
+TPath2D loadTUM(const std::string& path);
+
+}  // namespace rfir::common

@@ -1,0 +1,36 @@
+/* rfir: decodes a raw IR receiver window into frequency codes and a voltage by
+ * FFT (textlog.md `ir_raw`; thesis 5.2). */
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace rfir::ir
+{
+struct TDecoderParams
+{
+    /** A code is present when its spectral amplitude exceeds this fraction of
+     * the strongest code's amplitude and the absolute floor below. */
+    double relativeThreshold = 0.25;
+    /** Minimum on-level (volts) of a square wave to count as present. */
+    double minVolts = 0.05;
+};
+
+struct TDecodedIR
+{
+    std::vector<uint8_t> codes;  //!< ascending; empty: no emitter in view
+    double volts = 0;            //!< on-level of the square waves
+};
+
+/** Decodes one window sampled at rateHz. The signal is an offset plus, per code
+ * present, a 50 % duty square wave between 0 and V, plus noise. */
+TDecodedIR decodeIRWindow(const std::vector<float>& samples, double rateHz,
+                          const TDecoderParams& p = {});
+
+/** Synthesizes such a window (for the simulator and the tests); phases in
+ * [0, 1) per code, noise added by the caller. */
+std::vector<float> synthesizeIRWindow(const std::vector<uint8_t>& codes, double volts,
+                                      double offset, double rateHz, size_t n,
+                                      const std::vector<double>& phases);
+
+}  // namespace rfir::ir

@@ -1,0 +1,167 @@
+#include <rfir/common/rawlog_io.h>
+
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+namespace rfir::common
+{
+using namespace mrpt::obs;
+
+CRawlogWriter::CRawlogWriter(const std::string& path,
+                             const rfir::obs::CObservationLogHeader& hdr,
+                             const CActionRobotMovement2D::TMotionModelOptions& motion)
+    : path_(path), tmp_(path + ".tmp." + std::to_string(::getpid())), motion_(motion)
+{
+    out_ = std::make_unique<mrpt::io::CFileGZOutputStream>();
+    if (!out_->open(tmp_))
+        throw std::runtime_error("cannot open '" + path + "' for writing");
+    auto ar = mrpt::serialization::archiveFrom(*out_);
+    CActionCollection acts;
+    CSensoryFrame sf;
+    auto h = std::make_shared<rfir::obs::CObservationLogHeader>(hdr);
+    if (h->sensorLabel.empty()) h->sensorLabel = "HEADER";
+    sf.insert(h);
+    ar << acts << sf;
+}
+
+CRawlogWriter::~CRawlogWriter()
+{
+    if (out_)
+    {
+        out_->close();
+        std::remove(tmp_.c_str());
+    }
+}
+
+void CRawlogWriter::writeStep(double t, const std::optional<mrpt::poses::CPose2D>& odom,
+                              const std::vector<CObservation::Ptr>& obs)
+{
+    if (!out_) throw std::logic_error("CRawlogWriter: write after close");
+    const auto ts = mrpt::Clock::fromDouble(t);
+    CActionCollection acts;
+    CSensoryFrame sf;
+    if (odom)
+    {
+        CActionRobotMovement2D mv;
+        mv.timestamp = ts;
+        // The first odometry record only anchors the odometry frame.
+        mv.computeFromOdometry(lastOdom_ ? (*odom - *lastOdom_) : mrpt::poses::CPose2D(),
+                               motion_);
+        acts.insert(mv);
+        auto o = CObservationOdometry::Create();
+        o->timestamp = ts;
+        o->sensorLabel = "ODOMETRY";
+        o->odometry = *odom;
+        sf.insert(o);
+        lastOdom_ = odom;
+    }
+    for (const auto& o : obs)
+    {
+        o->timestamp = ts;
+        sf.insert(o);
+    }
+    auto ar = mrpt::serialization::archiveFrom(*out_);
+    ar << acts << sf;
+    steps_++;
+}
+
+void CRawlogWriter::close()
+{
+    if (!out_) return;
+    out_->close();
+    out_.reset();
+    if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
+    {
+        std::remove(tmp_.c_str());
+        throw std::runtime_error("cannot write '" + path_ + "' (rename failed)");
+    }
+}
+
+CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
+{
+    if (!in_.open(path)) throw std::runtime_error(path + ": cannot open rawlog");
+    auto a = readObject();
+    auto s = readObject();
+    auto acts = std::dynamic_pointer_cast<CActionCollection>(a);
+    auto sf = std::dynamic_pointer_cast<CSensoryFrame>(s);
+    if (!acts || !sf)
+        throw std::runtime_error(path + ": not a rawlog in action/sensory-frame layout "
+                                        "(see docs/rawlog-layout.md)");
+    if (auto h = sf->getObservationByClass<rfir::obs::CObservationLogHeader>())
+        header_ = h;
+    else
+    {
+        std::cerr << "warning: " << path
+                  << ": no rfir log header; reader geometry comes from the observations\n";
+        header_ = std::make_shared<rfir::obs::CObservationLogHeader>();
+        pending_ = std::make_pair(acts, sf);
+    }
+}
+
+mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject()
+{
+    if (in_.checkEOF()) return {};
+    entry_++;
+    try
+    {
+        auto ar = mrpt::serialization::archiveFrom(in_);
+        return ar.ReadObject();
+    }
+    catch (const std::exception& e)
+    {
+        std::string msg = e.what();
+        if (msg.size() > 300) msg = msg.substr(0, 300) + "...";
+        throw std::runtime_error(path_ + ": entry " + std::to_string(entry_) +
+                                 ": cannot read object (corrupt file, or a class not "
+                                 "registered): " + msg);
+    }
+}
+
+bool CRawlogReader::next(TRawlogStep& st)
+{
+    CActionCollection::Ptr acts;
+    CSensoryFrame::Ptr sf;
+    if (pending_)
+    {
+        std::tie(acts, sf) = *pending_;
+        pending_.reset();
+    }
+    else
+    {
+        auto a = readObject();
+        if (!a) return false;
+        auto s = readObject();
+        acts = std::dynamic_pointer_cast<CActionCollection>(a);
+        sf = std::dynamic_pointer_cast<CSensoryFrame>(s);
+        if (!acts || !sf)
+            throw std::runtime_error(path_ + ": entry " + std::to_string(entry_) +
+                                     ": expected an action collection / sensory frame pair");
+    }
+    st = TRawlogStep();
+    st.index = steps_++;
+    st.action = acts;
+    st.sf = sf;
+    bool haveT = false;
+    for (const auto& o : *sf)
+    {
+        if (!haveT) { st.t = mrpt::Clock::toDouble(o->timestamp); haveT = true; }
+        if (auto od = std::dynamic_pointer_cast<CObservationOdometry>(o)) st.odometry = od->odometry;
+        else if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o)) st.rfid = r;
+        else if (auto i = std::dynamic_pointer_cast<rfir::obs::CObservationIRSignals>(o)) st.ir = i;
+        else if (auto b = std::dynamic_pointer_cast<CObservationBearingRange>(o)) st.rb = b;
+    }
+    if (auto mv = acts->getBestMovementEstimation())
+    {
+        st.odometryIncrement = mv->rawOdometryIncrementReading;
+        if (!haveT) st.t = mrpt::Clock::toDouble(mv->timestamp);
+    }
+    return true;
+}
+
+}  // namespace rfir::common

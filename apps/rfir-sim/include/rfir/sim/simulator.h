@@ -1,0 +1,217 @@
+/* rfir: the simulator of the seeds' setups (SPEC sections 1, 7, 8, 9): an
+ * omnidirectional robot with 8 HF RFID readers over a tag carpet, two IR
+ * receivers under a ceiling emitter lattice, a range-and-bearing sensor.
+ *
+ * In-process use (tests, benchmarks), no files involved:
+ *
+ *   rfir::sim::TSimConfig cfg;               // defaults: 60 mm, 16 tags/m^2,
+ *                                            // rectangular loop x3, RFID only
+ *   cfg.trajectory.laps = 1;                 // shorten the run
+ *   cfg.maxDuration = 30;                    // or cut it (seconds)
+ *   auto out = rfir::sim::simulate(cfg, 42); // same seed -> same output
+ *   for (const auto& s : out.steps) { s.t; s.odometry; s.obs; s.truePose; }
+ *   out.groundTruth;  out.gtMap;  out.header;
+ *
+ * or from a stock INI:
+ *   auto cfg = rfir::sim::loadSimConfig(RFIR_SOURCE_DIR
+ *                                       "/config_ini/sim_rfid_300mm_4tags_random.ini");
+ *   rfir::sim::writeOutputs(rfir::sim::simulate(cfg, 1), "/tmp/out", "run");
+ *
+ * The models (noise, detection, voltage) are described in docs/simulator.md. */
+#pragma once
+
+#include <rfir/common/map_io.h>
+#include <rfir/common/trajectory_io.h>
+#include <rfir/obs/CObservationLogHeader.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rfir::sim
+{
+/** Trajectory of the robot ([trajectory] section). */
+struct TTrajectoryConfig
+{
+    enum class Kind
+    {
+        Loop,        //!< rectangle inset by `margin` in the area, `laps` times
+        Predefined,  //!< one of five closed shapes (`predefined` = 1..5), `laps` times
+        Random       //!< `waypoints` uniform random waypoints inside the inset area
+    };
+    enum class Rotation
+    {
+        None,    //!< heading constant: the omnidirectional robot only translates
+        Follow,  //!< turns in place at each corner to face the next segment
+        Spin     //!< rotates at `spinRate` while translating
+    };
+    Kind kind = Kind::Loop;
+    Rotation rotation = Rotation::None;
+    int laps = 3;
+    int predefined = 1;
+    int waypoints = 20;
+    double margin = 0.5;     //!< distance kept from the area border (m)
+    double speed = 0.2;      //!< m/s
+    double turnRate = 0.5;   //!< rad/s, in-place turns (Follow)
+    double spinRate = 0.2;   //!< rad/s (Spin)
+    double startPhi = 0;     //!< initial heading (rad)
+    int spots = 0;           //!< stops spread evenly along the path (IR: 70)
+    double spotPause = 1.0;  //!< seconds standing at each spot
+};
+
+/** Kidnapping ([kidnap] section): at `time` the robot is lifted and carried for
+ * `carryTime` seconds to the pose it had at `toTime` (then it replays its path
+ * from there), or, when `toTime` < 0, to (toX, toY, toPhi) (then the rest of its
+ * path is moved rigidly with it). The wheels do not turn while carried: odometry
+ * records go on unchanged (Frozen) or stop until it is put down (Stop). The
+ * lifted robot's floor readers read nothing. */
+struct TKidnapConfig
+{
+    enum class Odometry { Frozen, Stop };
+    bool enabled = false;
+    double time = 60;
+    double carryTime = 2.0;
+    double toTime = 10;
+    double toX = 0, toY = 0, toPhi = 0;
+    Odometry odometry = Odometry::Frozen;
+};
+
+/** Odometry noise ([odometry] section), per step on the true increment
+ * (dx, dy, dphi) in the robot frame, d = |(dx, dy)|:
+ *   dx' = (1 + s) dx + N(0, kXY^2 d),  dy' = (1 + s) dy + N(0, kXY^2 d)
+ *   dphi' = (1 + r) dphi + h d + N(0, kPhiRot^2 |dphi| + kPhiXY^2 d)
+ * with per-run biases s ~ N(0, scaleSigma), r ~ N(0, rotScaleSigma),
+ * h ~ N(0, headingDriftSigma) [rad/m]. Variances grow with the distance
+ * (not the step count), so the drift does not depend on dt. */
+struct TOdometryNoise
+{
+    double kXY = 0.01;               //!< m / sqrt(m)
+    double kPhiRot = 0.02;           //!< rad / sqrt(rad)
+    double kPhiXY = 0.005;           //!< rad / sqrt(m)
+    double scaleSigma = 0.01;        //!< translation scale bias (fraction)
+    double rotScaleSigma = 0.01;     //!< rotation scale bias (fraction)
+    double headingDriftSigma = 0.005;  //!< rad per metre travelled
+};
+
+/** Tag carpet ([rfid] section): a square grid of `density` tags/m^2 over the
+ * area, each tag displaced by N(0, placementSigma) per axis. */
+struct TRFIDConfig
+{
+    bool enabled = true;
+    double density = 16;
+    double placementSigma = 0.005;
+    double missProbability = 0;  //!< a tag inside a square is missed with it
+    std::string uidPrefix = "E0040150";  //!< + 8 random hex digits per tag
+};
+
+/** Ceiling emitters and receivers ([ir] section); thesis chapter 5. */
+struct TIRConfig
+{
+    enum class Output { Decoded, Raw };
+    bool enabled = false;
+    double pitch = 0.8;            //!< same-type emitter spacing (m)
+    double ceilingHeight = 1.5;    //!< emitter height above the floor (m)
+    double heightSpread = 0;       //!< per-emitter uniform +- variation (m)
+    double referenceHeight = 1.2;  //!< vertical distance eq. 5.3 was fitted at
+    std::vector<uint8_t> repeatedCodes{1, 2, 3, 4};
+    int uniqueCodesPerId = 2;
+    double visibleRadius = 0.28;   //!< horizontal radius an emitter is seen in
+    double voltSigma = 0.03;       //!< V noise on the decoded voltage
+    Output output = Output::Decoded;
+    double rateHz = 8000;
+    int samples = 800;
+    double rawNoiseSigma = 0.05;   //!< V noise per raw sample
+    double rawOffset = 0.4;        //!< ambient offset (V)
+    double period = 0.1;           //!< seconds between IR readings
+    /** Failed emitters: an ID (all emitters with it) or "x y" (the emitter
+     * there), one per entry. */
+    std::vector<std::string> failed;
+};
+
+/** Range-and-bearing sensor and landmarks ([range_bearing] section), SPEC 7. */
+struct TRBConfig
+{
+    bool enabled = false;
+    double density = 4;              //!< landmarks per m^2, uniform over the area
+    double sigmaRange = 0.010;       //!< m
+    double sigmaBearing = 0.05235987755982989;  //!< rad (3 deg)
+};
+
+/** Every parameter of a run; the defaults are the seeds' 60 mm / 16 tags/m^2
+ * rectangular loop (x3). Sections (the INI of a run): [simulation], [robot],
+ * [trajectory], [kidnap], [odometry], [rfid], [ir], [range_bearing]. */
+struct TSimConfig : public mrpt::config::CLoadableOptions
+{
+    TSimConfig();
+
+    // [simulation]
+    double dt = 0.1;           //!< sensing period (s)
+    double maxDuration = 0;    //!< > 0: cut the run there (s)
+    double areaMinX = 0, areaMinY = 0, areaMaxX = 4, areaMaxY = 4;  //!< m
+
+    // [robot]
+    std::vector<rfir::obs::TRFIDReader> readers;    //!< default: ring of 8
+    std::vector<rfir::obs::TIRReceiver> receivers;  //!< default: 2, top sides
+    rfir::obs::TRBSensor rbSensor;
+
+    TTrajectoryConfig trajectory;
+    TKidnapConfig kidnap;
+    TOdometryNoise odometry;
+    TRFIDConfig rfid;
+    TIRConfig ir;
+    TRBConfig rb;
+
+    /** Reads the sections "<prefix>simulation", "<prefix>robot", ... (prefix
+     * usually empty). A missing key keeps its current value; an unknown key in
+     * one of these sections or a bad value throws std::runtime_error naming
+     * the section and key. */
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                            const std::string& prefix) override;
+    void dumpToTextStream(std::ostream& out) const override;
+    /** Throws std::invalid_argument naming the parameter if inconsistent. */
+    void validate() const;
+};
+
+/** Loads an INI (every section of the file must be one of ours). Throws
+ * std::runtime_error("FILE: [section] key: what is wrong"). */
+TSimConfig loadSimConfig(const std::string& iniPath);
+
+/** The default reader layout: 8 readers on a ring of radius `ringRadius`
+ * at 22.5 + k * 45 deg, squares of half side `halfSize`. */
+std::vector<rfir::obs::TRFIDReader> ringReaderLayout(double ringRadius, double halfSize);
+
+/** One sensing instant. */
+struct TSimStep
+{
+    double t = 0;
+    std::optional<mrpt::poses::CPose2D> odometry;  //!< absolute odometry pose
+    std::vector<mrpt::obs::CObservation::Ptr> obs;  //!< labels RFID, IR, RB
+    mrpt::poses::CPose2D truePose;
+};
+
+struct TSimOutput
+{
+    rfir::obs::CObservationLogHeader header;
+    std::vector<TSimStep> steps;
+    rfir::common::TPath2D groundTruth;  //!< true pose at every step
+    rfir::common::TMapFile gtMap;       //!< tags, emitters, landmarks
+    rfir::common::TPath2D spots;        //!< true pose at each stop (IR spots)
+    /** Per-run odometry biases drawn from the noise model (s, r, h). */
+    double scaleBias = 0, rotScaleBias = 0, headingDrift = 0;
+};
+
+/** Runs the simulation; deterministic in (cfg, seed). */
+TSimOutput simulate(const TSimConfig& cfg, uint64_t seed);
+
+/** Writes DIR/NAME.rawlog, NAME.gt.tum, NAME.gt_map.txt and, when there are
+ * spots, NAME.spots.tum (each file whole or not at all). */
+void writeOutputs(const TSimOutput& out, const std::string& outDir,
+                  const std::string& name);
+
+}  // namespace rfir::sim

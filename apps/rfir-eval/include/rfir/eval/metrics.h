@@ -1,0 +1,148 @@
+/* rfir: accuracy metrics of the seeds' tables (thesis tables 3.1, 3.2, 4.1,
+ * 4.2, 5.2; PS-SLAM paper tables 3-7): mean and max of |dx|, |dy|, |dtheta|
+ * and distance, for the robot path and for the mapped landmarks.
+ * Units: metres and radians (tables convert to mm). */
+#pragma once
+
+#include <rfir/common/map_io.h>
+#include <rfir/common/trajectory_io.h>
+#include <rfir/obs/CObservationLogHeader.h>
+#include <rfir/obs/CObservationRFIDReaders.h>
+
+#include <cstddef>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace rfir::eval
+{
+/** Mean and max of the absolute errors. For maps, dtheta is unused (0). */
+struct TErrorStats
+{
+    size_t count = 0;  //!< number of evaluated items (poses or landmarks)
+    double mean_dx = 0, mean_dy = 0, mean_dtheta = 0, mean_dist = 0;
+    double max_dx = 0, max_dy = 0, max_dtheta = 0, max_dist = 0;
+};
+
+/** Error of one estimated pose against the ground truth at the same time. */
+struct TPoseError
+{
+    double t = 0;
+    double dx = 0, dy = 0;  //!< estimate minus truth, world frame (signed)
+    double dtheta = 0;      //!< estimate minus truth, wrapped to (-pi, pi]
+    double dist = 0;        //!< hypot(dx, dy)
+};
+
+struct TRobotErrors
+{
+    TErrorStats stats;
+    std::vector<TPoseError> perPose;  //!< in the estimated path's order
+    /** Estimated poses outside the ground truth's time span (not evaluated). */
+    size_t skipped = 0;
+};
+
+/** Error of one mapped landmark against its true position. */
+struct TLandmarkError
+{
+    std::string id;
+    double dx = 0, dy = 0, dist = 0;  //!< estimate minus truth (signed dx, dy)
+};
+
+struct TMapErrors
+{
+    rfir::common::TMapEntry::Kind kind = rfir::common::TMapEntry::Kind::Tag;
+    TErrorStats stats;  //!< over the mapped landmarks whose ID is in the truth
+    std::vector<TLandmarkError> perLandmark;
+    size_t mapped = 0;  //!< estimated entries of `kind` whose ID is in the truth
+    size_t total = 0;   //!< ground-truth entries of `kind`
+    /** Estimated IDs absent from the ground truth (wrong or spurious IDs). */
+    std::vector<std::string> unknownIds;
+    /** Ground-truth landmarks the robot passed over (came inside a reader's
+     * detection area, or the range-bearing sensor's field of view, along the
+     * true path); unset when the sensor geometry is unknown. */
+    std::optional<size_t> passedOver;
+    /** Of the passed-over landmarks, how many were mapped. */
+    std::optional<size_t> mappedOfPassedOver;
+};
+
+/** Wraps an angle to (-pi, pi]. */
+double wrapToPi(double a);
+
+/** Ground-truth pose at time t: linear interpolation of x, y and shortest-arc
+ * interpolation of the heading between the two bracketing poses (exact when t
+ * equals a stored time). nullopt when t is outside [gt.front().t, gt.back().t]
+ * (1e-6 s tolerance). `gt` must be sorted by time (checked by the callers below). */
+std::optional<mrpt::poses::CPose2D> interpolatePose(const rfir::common::TPath2D& gt,
+                                                    double t);
+
+/** Checks that a path is non-empty and in non-decreasing time; throws
+ * std::runtime_error naming `what` (e.g. the file) otherwise. */
+void checkPath(const rfir::common::TPath2D& p, const std::string& what);
+
+/** Robot errors: each estimated pose against the ground truth interpolated at
+ * its timestamp (interpolatePose). Poses outside the truth's time span are
+ * counted in `skipped`. Throws std::runtime_error if no pose can be evaluated
+ * or a path is empty / not sorted by time. */
+TRobotErrors computeRobotErrors(const rfir::common::TPath2D& est,
+                                const rfir::common::TPath2D& gt);
+
+/** Statistics of a set of per-pose errors (e.g. a time window of perPose). */
+TErrorStats statsOf(const std::vector<TPoseError>& errs);
+
+/** Map errors for the landmarks of one kind, associated by ID. Without `kind`,
+ * the kind of the estimated entries (Tag if the estimate is empty); throws
+ * std::runtime_error if the estimate mixes tags and landmarks and no kind is
+ * given. Emitters are skipped when inferring (IR maps are known, not mapped). */
+TMapErrors computeMapErrors(const rfir::common::TMapFile& est,
+                            const rfir::common::TMapFile& gt,
+                            std::optional<rfir::common::TMapEntry::Kind> kind = {});
+
+/** IDs of the ground-truth tags that came inside some reader's detection area
+ * (|e_x| < halfX and |e_y| < halfY, textlog `reader`) at some point of the true
+ * path. The path is densified between its poses (linear x, y, shortest-arc
+ * heading) so that no sample moves a reader by more than a quarter of the
+ * smallest half-size: the count does not depend on the ground truth's rate.
+ * A step longer than `maxGap` metres (a kidnapping, a teleport) is not
+ * densified: only its end poses are checked. Throws if `readers` is empty. */
+std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt,
+                                     const rfir::common::TPath2D& gtPath,
+                                     const std::vector<rfir::obs::TRFIDReader>& readers,
+                                     double maxGap = 0.5);
+
+/** IDs of the ground-truth range-bearing landmarks that were inside the
+ * sensor's range and field of view at some pose of the true path (the ground
+ * truth's poses, densified to 1/8 of the range, same `maxGap` rule). */
+std::set<std::string> landmarksInView(const rfir::common::TMapFile& gt,
+                                      const rfir::common::TPath2D& gtPath,
+                                      const rfir::obs::TRBSensor& sensor,
+                                      double maxGap = 0.5);
+
+/** Fills `m.passedOver` and `m.mappedOfPassedOver` from a set of IDs. */
+void setPassedOver(TMapErrors& m, const std::set<std::string>& passedIds,
+                   const rfir::common::TMapFile& est);
+
+/** What the evaluation needs from a rawlog: the sensor geometry and the
+ * odometry path. */
+struct TRawlogInfo
+{
+    /** Reader geometry: the log header's, or (logs without it) the union of
+     * the readers seen in the RFID observations. */
+    std::vector<rfir::obs::TRFIDReader> readers;
+    std::optional<rfir::obs::TRBSensor> rbSensor;
+    /** Absolute odometry poses (CObservationOdometry), or the accumulated
+     * odometry increments when absolute poses are absent. Raw odometry frame. */
+    rfir::common::TPath2D odometry;
+    size_t steps = 0;
+};
+
+/** Reads a rawlog once (rfir::common::CRawlogReader); throws on a corrupt file. */
+TRawlogInfo readRawlogInfo(const std::string& rawlogPath);
+
+/** Dead-reckoning path: the odometry re-expressed so that its first pose
+ * coincides with the ground truth at that time (G0 + (O0^-1 + Oi)). Odometry
+ * poses before the truth's start are dropped. Throws if nothing overlaps. */
+rfir::common::TPath2D alignOdometryAtStart(const rfir::common::TPath2D& odometry,
+                                           const rfir::common::TPath2D& gt);
+
+}  // namespace rfir::eval

@@ -1,0 +1,47 @@
+/* rfir: error tables in the seeds' layout (mm and rad) and one-line JSON. */
+#pragma once
+
+#include <rfir/eval/metrics.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rfir::eval
+{
+/** The evaluation of one run (one method on one data set). */
+struct TEvalResult
+{
+    std::string label = "estimate";  //!< method name, first table column
+    std::optional<TRobotErrors> robot;
+    /** Dead reckoning on the same data (odometry aligned at the start pose). */
+    std::optional<TRobotErrors> odometry;
+    std::optional<TMapErrors> map;
+};
+
+struct TTableOptions
+{
+    bool showMax = true;  //!< add the "max" columns beside the "mean" ones
+};
+
+/** Plain-text tables, one row per result: robot x, y [mm], theta [rad], dr [mm]
+ * (mean, then max), then map x, y, dt [mm] with mapped / passed-over / total
+ * counts. A result's `odometry` adds a row "<label> odometry". Sections with
+ * no data in any row are left out. */
+std::string formatErrorTable(const std::vector<TEvalResult>& rows,
+                             const TTableOptions& opts = {});
+
+/** One JSON object on one line (no newline), SI units (m, rad). Keys:
+ * "label"; "robot": {"poses","skipped","mean_dx","mean_dy","mean_dtheta",
+ * "mean_dist","max_dx","max_dy","max_dtheta","max_dist"};
+ * "dead_reckoning": same keys; for a map of kind K with plural P ("tags",
+ * "landmarks", "emitters"): P: {"count","mean_dx","mean_dy","mean_dist",
+ * "max_dx","max_dy","max_dist"}, "P_mapped", "P_total", "P_unknown_ids",
+ * "P_passed_over" and "P_mapped_of_passed_over" (null when unknown).
+ * Absent parts are omitted. */
+std::string toJson(const TEvalResult& r);
+
+/** Plural JSON key of a map kind: "tags", "emitters", "landmarks". */
+const char* pluralKey(rfir::common::TMapEntry::Kind k);
+
+}  // namespace rfir::eval

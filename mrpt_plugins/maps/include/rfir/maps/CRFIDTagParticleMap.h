@@ -1,0 +1,193 @@
+/* rfir: map of RFID tags (and range-bearing landmarks), one independent
+ * particle filter or fixed-lag particle smoother per tag (PF-SLAM / PS-SLAM,
+ * SPEC sections 4, 5, 7). See docs/tag-maps.md. */
+#pragma once
+
+#include <rfir/models/detection_likelihood.h>
+#include <rfir/models/range_bearing.h>
+#include <rfir/models/tag_fixed_lag_smoother.h>
+#include <rfir/models/tag_particle_filter.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+namespace rfir::maps
+{
+enum class TTagEstimatorKind
+{
+    ParticleFilter,   //!< INI "particle_filter" (PF-SLAM)
+    FixedLagSmoother  //!< INI "fixed_lag_smoother" (PS-SLAM)
+};
+
+/** How re-reads of a tag weigh the robot (see docs/tag-maps.md). */
+enum class TRobotUpdatePolicy
+{
+    /** INI "literal": the seeds' Algorithm 1: update the tag first, then weigh
+     * the robot with the updated estimate, on every read (incl. the first). */
+    Literal,
+    /** INI "revisit": only the first read of a new visit (the tag was absent
+     * from at least `revisit_min_gap` RFID observations since its last read)
+     * weighs the robot, against the estimate from before this visit; the tag
+     * is updated after. Reads within a visit (and of the first pass) do not. */
+    Revisit,
+    /** INI "revisit_all": every read of a new visit weighs the robot, against
+     * the estimate frozen at the visit's start; reads of the first pass do not. */
+    RevisitAll
+};
+
+class CRFIDTagParticleMap : public mrpt::maps::CMetricMap
+{
+    DEFINE_SERIALIZABLE(CRFIDTagParticleMap, rfir::maps)
+
+public:
+    using TEstimator =
+        std::variant<rfir::models::TagParticleFilter, rfir::models::TagFixedLagSmoother>;
+
+    /** One mapped tag or landmark. */
+    struct TTagEntry
+    {
+        std::string id;
+        TEstimator estimator;
+        rfir::models::PointEstimate estimate;  //!< cached from the estimator
+        /** Estimate frozen at the start of the current visit (RevisitAll). */
+        rfir::models::PointEstimate visitStartEstimate;
+        uint64_t detections = 0;    //!< number of (reader, tag) reads
+        uint64_t visits = 0;        //!< number of visits (first pass = 1)
+        uint64_t lastReadStep = 0;  //!< index (1-based) of the last observation read in
+        const std::vector<mrpt::math::TPoint2D>& particles() const;
+    };
+
+    CRFIDTagParticleMap();
+
+    /** @name Access to the estimates (O(1) by ID; the list ones are O(N)).
+     * @{ */
+    const TTagEntry* getTag(const std::string& id) const;
+    const TTagEntry* getLandmark(const std::string& id) const;
+    size_t tagCount() const { return m_tags.size(); }
+    size_t landmarkCount() const { return m_landmarks.size(); }
+    /** All tags / landmarks, sorted by ID (for output; O(N log N)). */
+    std::vector<const TTagEntry*> tags() const;
+    std::vector<const TTagEntry*> landmarks() const;
+    /** @} */
+
+    /** True if the robot filter must insert an observation (update the tags)
+     * BEFORE weighing its particles with computeObservationLikelihood (policy
+     * Literal); false if it must weigh first, then insert (Revisit*). */
+    bool updateTagsBeforeWeighing() const;
+
+    /** Names for CObservationBearingRange landmark IDs (index = ID), as in the
+     * log header; IDs without a name use their decimal text. */
+    void setLandmarkNames(const std::vector<std::string>& names)
+    {
+        m_landmarkNames = names;
+    }
+    const std::vector<std::string>& landmarkNames() const { return m_landmarkNames; }
+    std::string landmarkName(int32_t id) const;
+
+    /** Would a read of this tag in the next observation start a new visit?
+     * (false for unknown tags). */
+    bool isNewVisit(const std::string& tagId) const;
+
+    /** Log-likelihood of one detection of a mapped tag by reader `r` for a
+     * robot pose (SPEC section 2), ignoring the robot-update policy. */
+    double detectionLogLikelihood(const TTagEntry& tag,
+                                  const mrpt::math::TPose2D& robot,
+                                  const rfir::models::ReaderArea& r) const;
+
+    /** @name Instrumentation: tag entries touched (created or updated).
+     * @{ */
+    size_t lastInsertTouched() const { return m_lastTouched; }
+    uint64_t totalTouched() const { return m_totalTouched; }
+    /** @} */
+
+    /** Writes `tag <id> <x> <y> <sx> <sy>` and `landmark ...` lines (textlog.md
+     * output format), sorted by ID. Throws on I/O error. */
+    void saveToTextFile(const std::string& path) const;
+
+    /** Base seed of the per-update generators (every insert reseeds from
+     * (seed, step), so copies made by serialization continue identically). */
+    void setRandomSeed(uint64_t seed) { insertionOptions.seed = seed; }
+
+    // CMetricMap interface
+    bool isEmpty() const override;
+    void saveMetricMapRepresentationToFile(const std::string& filNamePrefix) const override;
+    void getVisualizationInto(mrpt::opengl::CSetOfObjects& outObj) const override;
+    std::string asString() const override;
+
+    struct TInsertionOptions : public mrpt::config::CLoadableOptions
+    {
+        TTagEstimatorKind estimator = TTagEstimatorKind::ParticleFilter;
+        size_t numParticles = 100;  //!< num_particles (L)
+        size_t lag = 25;            //!< lag (smoother)
+        double smootherStepSigma = 0.01;  //!< smoother_step_sigma (m)
+        double rougheningSigma = 0.0;     //!< roughening_sigma (m, PF only)
+        double essThreshold = 1.0;        //!< ess_threshold (PF only)
+        rfir::models::ResamplingScheme resampling =
+            rfir::models::ResamplingScheme::Systematic;  //!< resampling
+        uint64_t seed = 1;  //!< seed
+
+        void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
+                                const std::string& section) override;
+        void dumpToTextStream(std::ostream& out) const override;
+        static const std::vector<std::string>& allowedKeys();
+    } insertionOptions;
+
+    struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
+    {
+        /** detection_model, beta, gaussian_sigma_scale: weigh both tag and robot
+         * particles (the seeds use one function for both). */
+        rfir::models::DetectionModelParams detection;
+        /** rb_sigma_range (m), rb_sigma_bearing_deg (INI in degrees). */
+        rfir::models::RangeBearingParams rangeBearing;
+        TRobotUpdatePolicy robotUpdate = TRobotUpdatePolicy::Literal;  //!< robot_update
+        size_t revisitMinGap = 1;  //!< revisit_min_gap (observations without the tag)
+        /** rb_use_landmark_cov: add the landmark estimate's covariance to the
+         * range-bearing noise when weighing the robot (false = the seeds). */
+        bool rbUseLandmarkCov = false;
+
+        void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
+                                const std::string& section) override;
+        void dumpToTextStream(std::ostream& out) const override;
+        static const std::vector<std::string>& allowedKeys();
+    } likelihoodOptions;
+
+    MAP_DEFINITION_START(CRFIDTagParticleMap)
+    rfir::maps::CRFIDTagParticleMap::TInsertionOptions insertionOpts;
+    rfir::maps::CRFIDTagParticleMap::TLikelihoodOptions likelihoodOpts;
+    MAP_DEFINITION_END(CRFIDTagParticleMap)
+
+protected:
+    void internal_clear() override;
+    bool internal_insertObservation(
+        const mrpt::obs::CObservation& obs,
+        const std::optional<const mrpt::poses::CPose3D>& robotPose =
+            std::nullopt) override;
+    double internal_computeObservationLikelihood(
+        const mrpt::obs::CObservation& obs,
+        const mrpt::poses::CPose3D& takenFrom) const override;
+    bool internal_canComputeObservationLikelihood(
+        const mrpt::obs::CObservation& obs) const override;
+
+private:
+    using TTable = std::unordered_map<std::string, TTagEntry>;
+    TTable m_tags, m_landmarks;
+    std::vector<std::string> m_landmarkNames;
+    uint64_t m_rfidSteps = 0, m_rbSteps = 0;  //!< observations inserted, per sensor
+    size_t m_lastTouched = 0;
+    uint64_t m_totalTouched = 0;
+
+    friend struct CRFIDTagParticleMapImpl;
+};
+
+/** Registers the library's classes with MRPT (also done at load time; calling
+ * it keeps the library linked under --as-needed). Idempotent. */
+void registerAllClasses();
+
+}  // namespace rfir::maps

@@ -1,0 +1,358 @@
+/* rfir: CRFIDTagParticleMap: insertion (tag updates) and the robot's
+ * observation likelihood (PF-SLAM 003 Algorithm 1, PS-SLAM thesis Algorithm 2). */
+#include <rfir/maps/CRFIDTagParticleMap.h>
+#include <rfir/obs/CObservationRFIDReaders.h>
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+using namespace rfir::maps;
+using rfir::models::PointEstimate;
+using rfir::models::ReaderArea;
+
+const std::vector<mrpt::math::TPoint2D>& CRFIDTagParticleMap::TTagEntry::particles() const
+{
+    return std::visit([](const auto& e) -> const std::vector<mrpt::math::TPoint2D>& {
+        return e.particles();
+    }, estimator);
+}
+
+namespace rfir::maps
+{
+struct CRFIDTagParticleMapImpl
+{
+    using Map = CRFIDTagParticleMap;
+    using Entry = Map::TTagEntry;
+
+    static uint32_t stepSeed(uint64_t seed, uint64_t salt)
+    {
+        // splitmix64: decorrelates consecutive steps; the generator depends only
+        // on (seed, step), so serialized copies continue identically.
+        uint64_t z = seed * 0x9E3779B97F4A7C15ULL + salt + 0x632BE59BD9B4E019ULL;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return static_cast<uint32_t>((z ^ (z >> 31)) & 0xFFFFFFFFULL);
+    }
+
+    static Map::TEstimator makeEstimator(const Map::TInsertionOptions& o)
+    {
+        if (o.estimator == TTagEstimatorKind::ParticleFilter)
+        {
+            rfir::models::TagParticleFilterParams p;
+            p.numParticles = o.numParticles;
+            p.resampling = o.resampling;
+            p.essThreshold = o.essThreshold;
+            p.rougheningSigma = o.rougheningSigma;
+            return rfir::models::TagParticleFilter(p);
+        }
+        rfir::models::TagFixedLagSmootherParams p;
+        p.numParticles = o.numParticles;
+        p.lag = o.lag;
+        p.stepSigma = o.smootherStepSigma;
+        p.resampling = o.resampling;
+        return rfir::models::TagFixedLagSmoother(p);
+    }
+
+    /** Re-weigh/resample an entry's estimator with a likelihood, refresh cache. */
+    static void update(Entry& e, const rfir::models::PointLogLikelihood& f,
+                       mrpt::random::CRandomGenerator& rng)
+    {
+        std::visit([&](auto& est) { est.update(f, rng); }, e.estimator);
+        e.estimate = std::visit([](auto& est) { return est.estimate(); }, e.estimator);
+    }
+
+    /** Marks a read at `step`; starts a new visit (freezing the estimate) if the
+     * entry was absent from >= minGap observations. */
+    static void markRead(Entry& e, uint64_t step, size_t minGap, size_t reads)
+    {
+        if (e.visits == 0 || step - 1 - e.lastReadStep >= minGap)
+        {
+            e.visits++;
+            e.visitStartEstimate = e.estimate;
+        }
+        e.lastReadStep = step;
+        e.detections += reads;
+    }
+
+    /** Which estimate (if any) weighs the robot for a read of `e`, per policy. */
+    static const PointEstimate* estimateForRobot(const Map& m, const Entry& e,
+                                                 uint64_t stepsSoFar)
+    {
+        const auto& lo = m.likelihoodOptions;
+        if (lo.robotUpdate == TRobotUpdatePolicy::Literal) return &e.estimate;
+        // Called before this observation is inserted: e.lastReadStep <= stepsSoFar.
+        const bool newVisit = stepsSoFar - e.lastReadStep >= lo.revisitMinGap;
+        if (newVisit) return &e.estimate;  // still the estimate before this visit
+        if (lo.robotUpdate == TRobotUpdatePolicy::RevisitAll && e.visits >= 2)
+            return &e.visitStartEstimate;
+        return nullptr;  // consecutive re-read (or first pass): nothing new
+    }
+
+    static ReaderArea area(const rfir::obs::TRFIDReader& r)
+    {
+        if (!(r.halfX > 0) || !(r.halfY > 0))
+            throw std::runtime_error("CRFIDTagParticleMap: reader '" + r.id +
+                                     "' has a non-positive half-size");
+        return {r.x, r.y, r.halfX, r.halfY};
+    }
+
+    static void insertRFID(Map& m, const rfir::obs::CObservationRFIDReaders& o,
+                           const mrpt::math::TPose2D& robot)
+    {
+        const uint64_t step = ++m.m_rfidSteps;
+        mrpt::random::CRandomGenerator rng(stepSeed(m.insertionOptions.seed, 2 * step));
+        // Group the readers that read each tag at this instant (order kept).
+        std::vector<std::pair<std::string, std::vector<ReaderArea>>> groups;
+        std::unordered_map<std::string, size_t> where;
+        for (const auto& rd : o.readings)
+            for (const auto& id : rd.tags)
+            {
+                auto [it, isNew] = where.emplace(id, groups.size());
+                if (isNew) groups.push_back({id, {}});
+                groups[it->second].second.push_back(area(rd.reader));
+            }
+        const rfir::models::DetectionLikelihood det(m.likelihoodOptions.detection);
+        for (auto& [id, areas] : groups)
+        {
+            auto it = m.m_tags.find(id);
+            size_t first = 0;
+            if (it == m.m_tags.end())
+            {
+                // New tag: particles over the first detecting reader (geometry
+                // from the observation), weighed by any other reader.
+                Entry e;
+                e.id = id;
+                e.estimator = makeEstimator(m.insertionOptions);
+                std::visit([&](auto& est) { est.initUniform(robot, areas[0], rng); },
+                           e.estimator);
+                e.estimate = std::visit([](auto& est) { return est.estimate(); },
+                                        e.estimator);
+                it = m.m_tags.emplace(id, std::move(e)).first;
+                first = 1;
+            }
+            Entry& e = it->second;
+            markRead(e, step, m.likelihoodOptions.revisitMinGap, areas.size());
+            if (first < areas.size())
+            {
+                const std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
+                update(e, [&](const mrpt::math::TPoint2D& p) {
+                    double s = 0;
+                    for (const auto& a : rest) s += det.logLikelihood(robot, a, p);
+                    return s;
+                }, rng);
+            }
+            m.m_lastTouched++;
+        }
+    }
+
+    static mrpt::math::TPose2D sensorPose(const mrpt::obs::CObservationBearingRange& o,
+                                          const mrpt::math::TPose2D& robot)
+    {
+        const auto& s = o.sensorLocationOnRobot;
+        const double c = std::cos(robot.phi), sn = std::sin(robot.phi);
+        return {robot.x + c * s.x() - sn * s.y(), robot.y + sn * s.x() + c * s.y(),
+                mrpt::math::wrapToPi(robot.phi + s.yaw())};
+    }
+
+    static void insertRB(Map& m, const mrpt::obs::CObservationBearingRange& o,
+                         const mrpt::math::TPose2D& robot)
+    {
+        const uint64_t step = ++m.m_rbSteps;
+        mrpt::random::CRandomGenerator rng(stepSeed(m.insertionOptions.seed, 2 * step + 1));
+        const auto sensor = sensorPose(o, robot);
+        const auto& rb = m.likelihoodOptions.rangeBearing;
+        for (const auto& z : o.sensedData)
+        {
+            const std::string id = m.landmarkName(z.landmarkID);
+            auto it = m.m_landmarks.find(id);
+            if (it == m.m_landmarks.end())
+            {
+                // New landmark: samples of the noisy inverse model.
+                Entry e;
+                e.id = id;
+                e.estimator = makeEstimator(m.insertionOptions);
+                auto pts = rfir::models::sampleRangeBearingInverse(
+                    sensor, z.range, z.yaw, rb, m.insertionOptions.numParticles, rng);
+                std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
+                           e.estimator);
+                e.estimate = std::visit([](auto& est) { return est.estimate(); },
+                                        e.estimator);
+                markRead(e, step, m.likelihoodOptions.revisitMinGap, 1);
+                m.m_landmarks.emplace(id, std::move(e));
+            }
+            else
+            {
+                markRead(it->second, step, m.likelihoodOptions.revisitMinGap, 1);
+                update(it->second, [&](const mrpt::math::TPoint2D& p) {
+                    return rfir::models::rangeBearingLogLikelihood(sensor, p, z.range,
+                                                                   z.yaw, rb);
+                }, rng);
+            }
+            m.m_lastTouched++;
+        }
+    }
+
+    static double rbLogLik(const Map& m, const PointEstimate& est,
+                           const mrpt::math::TPose2D& sensor, double range, double yaw)
+    {
+        auto p = m.likelihoodOptions.rangeBearing;
+        if (m.likelihoodOptions.rbUseLandmarkCov)
+        {
+            // Linearised: landmark covariance projected on the range and
+            // bearing directions, added to the sensor noise.
+            double r, b;
+            rfir::models::predictRangeBearing(sensor, est.mean, r, b);
+            const double a = sensor.phi + b, c = std::cos(a), s = std::sin(a);
+            const auto& P = est.cov;
+            const double vr = c * c * P(0, 0) + 2 * c * s * P(0, 1) + s * s * P(1, 1);
+            const double vt = s * s * P(0, 0) - 2 * c * s * P(0, 1) + c * c * P(1, 1);
+            p.sigmaRange = std::sqrt(p.sigmaRange * p.sigmaRange + vr);
+            p.sigmaBearing =
+                std::sqrt(p.sigmaBearing * p.sigmaBearing + vt / std::max(r * r, 1e-6));
+        }
+        return rfir::models::rangeBearingLogLikelihood(sensor, est.mean, range, yaw, p);
+    }
+};
+}  // namespace rfir::maps
+
+using Impl = rfir::maps::CRFIDTagParticleMapImpl;
+
+CRFIDTagParticleMap::CRFIDTagParticleMap() = default;
+
+const CRFIDTagParticleMap::TTagEntry* CRFIDTagParticleMap::getTag(
+    const std::string& id) const
+{
+    const auto it = m_tags.find(id);
+    return it == m_tags.end() ? nullptr : &it->second;
+}
+
+const CRFIDTagParticleMap::TTagEntry* CRFIDTagParticleMap::getLandmark(
+    const std::string& id) const
+{
+    const auto it = m_landmarks.find(id);
+    return it == m_landmarks.end() ? nullptr : &it->second;
+}
+
+static std::vector<const CRFIDTagParticleMap::TTagEntry*> sortedEntries(
+    const std::unordered_map<std::string, CRFIDTagParticleMap::TTagEntry>& t)
+{
+    std::vector<const CRFIDTagParticleMap::TTagEntry*> v;
+    v.reserve(t.size());
+    for (const auto& kv : t) v.push_back(&kv.second);
+    std::sort(v.begin(), v.end(), [](auto a, auto b) { return a->id < b->id; });
+    return v;
+}
+
+std::vector<const CRFIDTagParticleMap::TTagEntry*> CRFIDTagParticleMap::tags() const
+{
+    return sortedEntries(m_tags);
+}
+
+std::vector<const CRFIDTagParticleMap::TTagEntry*> CRFIDTagParticleMap::landmarks() const
+{
+    return sortedEntries(m_landmarks);
+}
+
+bool CRFIDTagParticleMap::updateTagsBeforeWeighing() const
+{
+    return likelihoodOptions.robotUpdate == TRobotUpdatePolicy::Literal;
+}
+
+std::string CRFIDTagParticleMap::landmarkName(int32_t id) const
+{
+    if (id >= 0 && static_cast<size_t>(id) < m_landmarkNames.size() &&
+        !m_landmarkNames[id].empty())
+        return m_landmarkNames[id];
+    return std::to_string(id);
+}
+
+bool CRFIDTagParticleMap::isNewVisit(const std::string& tagId) const
+{
+    const TTagEntry* e = getTag(tagId);
+    return e && m_rfidSteps - e->lastReadStep >= likelihoodOptions.revisitMinGap;
+}
+
+double CRFIDTagParticleMap::detectionLogLikelihood(const TTagEntry& tag,
+                                                   const mrpt::math::TPose2D& robot,
+                                                   const ReaderArea& r) const
+{
+    return rfir::models::DetectionLikelihood(likelihoodOptions.detection)
+        .logLikelihood(robot, r, tag.estimate.mean);
+}
+
+bool CRFIDTagParticleMap::isEmpty() const { return m_tags.empty() && m_landmarks.empty(); }
+
+void CRFIDTagParticleMap::internal_clear()
+{
+    m_tags.clear();
+    m_landmarks.clear();
+    m_rfidSteps = m_rbSteps = 0;
+    m_lastTouched = 0;
+    m_totalTouched = 0;
+}
+
+bool CRFIDTagParticleMap::internal_insertObservation(
+    const mrpt::obs::CObservation& obs, const std::optional<const mrpt::poses::CPose3D>& pose)
+{
+    const mrpt::poses::CPose3D p = pose ? *pose : mrpt::poses::CPose3D();
+    const mrpt::math::TPose2D robot(p.x(), p.y(), p.yaw());
+    m_lastTouched = 0;
+    bool done = false;
+    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs))
+    {
+        Impl::insertRFID(*this, *o, robot);
+        done = true;
+    }
+    else if (const auto* b = dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs))
+    {
+        Impl::insertRB(*this, *b, robot);
+        done = true;
+    }
+    m_totalTouched += m_lastTouched;
+    return done;
+}
+
+bool CRFIDTagParticleMap::internal_canComputeObservationLikelihood(
+    const mrpt::obs::CObservation& obs) const
+{
+    return dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs) ||
+           dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs);
+}
+
+double CRFIDTagParticleMap::internal_computeObservationLikelihood(
+    const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const
+{
+    // Read-only on the map (thread-safe): sums the log-likelihood of every read
+    // of an already-mapped tag, the tag estimate against the reader placed by
+    // this robot pose (SPEC section 2); the policy picks which reads count.
+    const mrpt::math::TPose2D robot(takenFrom.x(), takenFrom.y(), takenFrom.yaw());
+    double sum = 0;
+    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs))
+    {
+        const rfir::models::DetectionLikelihood det(likelihoodOptions.detection);
+        for (const auto& rd : o->readings)
+            for (const auto& id : rd.tags)
+            {
+                const auto it = m_tags.find(id);
+                if (it == m_tags.end()) continue;
+                const PointEstimate* est = Impl::estimateForRobot(*this, it->second, m_rfidSteps);
+                if (est) sum += det.logLikelihood(robot, Impl::area(rd.reader), est->mean);
+            }
+    }
+    else if (const auto* b = dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs))
+    {
+        const auto sensor = Impl::sensorPose(*b, robot);
+        for (const auto& z : b->sensedData)
+        {
+            const auto it = m_landmarks.find(landmarkName(z.landmarkID));
+            if (it == m_landmarks.end()) continue;
+            const PointEstimate* est = Impl::estimateForRobot(*this, it->second, m_rbSteps);
+            if (est) sum += Impl::rbLogLik(*this, *est, sensor, z.range, z.yaw);
+        }
+    }
+    return sum;
+}

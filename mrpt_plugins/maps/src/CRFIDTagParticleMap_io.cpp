@@ -1,0 +1,279 @@
+/* rfir: CRFIDTagParticleMap serialization (versioned), text output and 3D view. */
+#include <rfir/maps/CRFIDTagParticleMap.h>
+
+#include <mrpt/opengl/CEllipsoid2D.h>
+#include <mrpt/opengl/CPointCloud.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+using namespace rfir::maps;
+using mrpt::math::TPoint2D;
+using mrpt::serialization::CArchive;
+
+IMPLEMENTS_SERIALIZABLE(CRFIDTagParticleMap, CMetricMap, rfir::maps)
+
+namespace
+{
+void writePts(CArchive& a, const std::vector<TPoint2D>& v)
+{
+    a.WriteAs<uint64_t>(v.size());
+    for (const auto& p : v) a << p.x << p.y;
+}
+std::vector<TPoint2D> readPts(CArchive& a)
+{
+    const auto n = a.ReadAs<uint64_t>();
+    if (n > (1ULL << 32)) throw std::runtime_error("CRFIDTagParticleMap: corrupt size");
+    std::vector<TPoint2D> v(n);
+    for (auto& p : v) a >> p.x >> p.y;
+    return v;
+}
+void writeEst(CArchive& a, const rfir::models::PointEstimate& e)
+{
+    a << e.mean.x << e.mean.y << e.cov(0, 0) << e.cov(0, 1) << e.cov(1, 1);
+}
+rfir::models::PointEstimate readEst(CArchive& a)
+{
+    rfir::models::PointEstimate e;
+    double c01;
+    a >> e.mean.x >> e.mean.y >> e.cov(0, 0) >> c01 >> e.cov(1, 1);
+    e.cov(0, 1) = e.cov(1, 0) = c01;
+    return e;
+}
+
+void writeEstimator(CArchive& a, const CRFIDTagParticleMap::TEstimator& est)
+{
+    a.WriteAs<uint8_t>(est.index());
+    if (const auto* pf = std::get_if<rfir::models::TagParticleFilter>(&est))
+    {
+        const auto& p = pf->params();
+        a.WriteAs<uint64_t>(p.numParticles);
+        a.WriteAs<uint8_t>(static_cast<uint8_t>(p.resampling));
+        a << p.essThreshold << p.rougheningSigma;
+        writePts(a, pf->particles());
+        for (double w : pf->logWeights()) a << w;
+        a.WriteAs<uint64_t>(pf->updateCount());
+        return;
+    }
+    const auto& ps = std::get<rfir::models::TagFixedLagSmoother>(est);
+    const auto& p = ps.params();
+    a.WriteAs<uint64_t>(p.numParticles);
+    a.WriteAs<uint64_t>(p.lag);
+    a << p.stepSigma;
+    a.WriteAs<uint8_t>(static_cast<uint8_t>(p.resampling));
+    writePts(a, ps.particles());
+    writePts(a, ps.rawHistory());
+    a.WriteAs<uint64_t>(ps.rawHead());
+    a.WriteAs<uint64_t>(ps.storedStates());
+    a.WriteAs<uint64_t>(ps.updateCount());
+}
+
+CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a)
+{
+    const auto kind = a.ReadAs<uint8_t>();
+    if (kind == 0)
+    {
+        rfir::models::TagParticleFilterParams p;
+        p.numParticles = a.ReadAs<uint64_t>();
+        p.resampling = static_cast<rfir::models::ResamplingScheme>(a.ReadAs<uint8_t>());
+        a >> p.essThreshold >> p.rougheningSigma;
+        auto pts = readPts(a);
+        std::vector<double> w(pts.size());
+        for (double& x : w) a >> x;
+        const auto upd = a.ReadAs<uint64_t>();
+        rfir::models::TagParticleFilter pf;
+        pf.setState(p, std::move(pts), std::move(w), upd);
+        return pf;
+    }
+    if (kind != 1) throw std::runtime_error("CRFIDTagParticleMap: unknown estimator kind");
+    rfir::models::TagFixedLagSmootherParams p;
+    p.numParticles = a.ReadAs<uint64_t>();
+    p.lag = a.ReadAs<uint64_t>();
+    a >> p.stepSigma;
+    p.resampling = static_cast<rfir::models::ResamplingScheme>(a.ReadAs<uint8_t>());
+    auto pts = readPts(a);
+    auto hist = readPts(a);
+    const auto head = a.ReadAs<uint64_t>();
+    const auto count = a.ReadAs<uint64_t>();
+    const auto upd = a.ReadAs<uint64_t>();
+    rfir::models::TagFixedLagSmoother ps;
+    ps.setState(p, std::move(pts), std::move(hist), head, count, upd);
+    return ps;
+}
+
+void writeEntries(CArchive& a, const std::vector<const CRFIDTagParticleMap::TTagEntry*>& v)
+{
+    a.WriteAs<uint64_t>(v.size());
+    for (const auto* e : v)
+    {
+        a << e->id;
+        a.WriteAs<uint64_t>(e->detections);
+        a.WriteAs<uint64_t>(e->visits);
+        a.WriteAs<uint64_t>(e->lastReadStep);
+        writeEst(a, e->visitStartEstimate);
+        writeEstimator(a, e->estimator);
+    }
+}
+
+template <class TABLE>
+void readEntries(CArchive& a, TABLE& t)
+{
+    t.clear();
+    const auto n = a.ReadAs<uint64_t>();
+    for (uint64_t i = 0; i < n; i++)
+    {
+        CRFIDTagParticleMap::TTagEntry e;
+        a >> e.id;
+        e.detections = a.ReadAs<uint64_t>();
+        e.visits = a.ReadAs<uint64_t>();
+        e.lastReadStep = a.ReadAs<uint64_t>();
+        e.visitStartEstimate = readEst(a);
+        e.estimator = readEstimator(a);
+        e.estimate = std::visit([](auto& x) { return x.estimate(); }, e.estimator);
+        const std::string id = e.id;
+        t.emplace(id, std::move(e));
+    }
+}
+}  // namespace
+
+uint8_t CRFIDTagParticleMap::serializeGetVersion() const { return 0; }
+
+void CRFIDTagParticleMap::serializeTo(CArchive& out) const
+{
+    out << genericMapParams;
+    const auto& io = insertionOptions;
+    out.WriteAs<uint8_t>(static_cast<uint8_t>(io.estimator));
+    out.WriteAs<uint64_t>(io.numParticles);
+    out.WriteAs<uint64_t>(io.lag);
+    out << io.smootherStepSigma << io.rougheningSigma << io.essThreshold;
+    out.WriteAs<uint8_t>(static_cast<uint8_t>(io.resampling));
+    out.WriteAs<uint64_t>(io.seed);
+    const auto& lo = likelihoodOptions;
+    out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.detection.model));
+    out << lo.detection.beta << lo.detection.gaussianSigmaScale;
+    out << lo.rangeBearing.sigmaRange << lo.rangeBearing.sigmaBearing;
+    out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.robotUpdate));
+    out.WriteAs<uint64_t>(lo.revisitMinGap);
+    out << lo.rbUseLandmarkCov;
+    out << m_landmarkNames;
+    out.WriteAs<uint64_t>(m_rfidSteps);
+    out.WriteAs<uint64_t>(m_rbSteps);
+    out.WriteAs<uint64_t>(m_totalTouched);
+    writeEntries(out, tags());
+    writeEntries(out, landmarks());
+}
+
+void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version)
+{
+    switch (version)
+    {
+        case 0:
+        {
+            in >> genericMapParams;
+            auto& io = insertionOptions;
+            io.estimator = static_cast<TTagEstimatorKind>(in.ReadAs<uint8_t>());
+            io.numParticles = in.ReadAs<uint64_t>();
+            io.lag = in.ReadAs<uint64_t>();
+            in >> io.smootherStepSigma >> io.rougheningSigma >> io.essThreshold;
+            io.resampling = static_cast<rfir::models::ResamplingScheme>(in.ReadAs<uint8_t>());
+            io.seed = in.ReadAs<uint64_t>();
+            auto& lo = likelihoodOptions;
+            lo.detection.model = static_cast<rfir::models::DetectionModel>(in.ReadAs<uint8_t>());
+            in >> lo.detection.beta >> lo.detection.gaussianSigmaScale;
+            in >> lo.rangeBearing.sigmaRange >> lo.rangeBearing.sigmaBearing;
+            lo.robotUpdate = static_cast<TRobotUpdatePolicy>(in.ReadAs<uint8_t>());
+            lo.revisitMinGap = in.ReadAs<uint64_t>();
+            in >> lo.rbUseLandmarkCov;
+            in >> m_landmarkNames;
+            m_rfidSteps = in.ReadAs<uint64_t>();
+            m_rbSteps = in.ReadAs<uint64_t>();
+            m_totalTouched = in.ReadAs<uint64_t>();
+            m_lastTouched = 0;
+            readEntries(in, m_tags);
+            readEntries(in, m_landmarks);
+        }
+        break;
+        default: MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    }
+}
+
+void CRFIDTagParticleMap::saveToTextFile(const std::string& path) const
+{
+    std::ostringstream ss;
+    ss << std::setprecision(9);
+    ss << "# rfir tag map: <kind> <id> <x> <y> <sx> <sy> (metres)\n";
+    auto put = [&](const char* kind, const std::vector<const TTagEntry*>& v) {
+        for (const auto* e : v)
+            ss << kind << ' ' << e->id << ' ' << e->estimate.mean.x << ' '
+               << e->estimate.mean.y << ' ' << std::sqrt(std::max(0.0, e->estimate.cov(0, 0)))
+               << ' ' << std::sqrt(std::max(0.0, e->estimate.cov(1, 1))) << '\n';
+    };
+    put("tag", tags());
+    put("landmark", landmarks());
+    // Whole or nothing: write a sibling temp file, then rename over the target.
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        if (!f) throw std::runtime_error("cannot write '" + tmp + "'");
+        f << ss.str();
+        f.close();
+        if (!f) throw std::runtime_error("error writing '" + tmp + "'");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    {
+        std::remove(tmp.c_str());
+        throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "'");
+    }
+}
+
+void CRFIDTagParticleMap::saveMetricMapRepresentationToFile(
+    const std::string& filNamePrefix) const
+{
+    saveToTextFile(filNamePrefix + "_tags.txt");
+}
+
+void CRFIDTagParticleMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& outObj) const
+{
+    if (!genericMapParams.enableSaveAs3DObject) return;
+    auto addSet = [&](const std::vector<const TTagEntry*>& v, float r, float g, float b) {
+        auto means = mrpt::opengl::CPointCloud::Create();
+        auto parts = mrpt::opengl::CPointCloud::Create();
+        means->setPointSize(6.0f);
+        means->setColor(r, g, b);
+        parts->setPointSize(1.5f);
+        parts->setColor(r * 0.6f + 0.4f, g * 0.6f + 0.4f, b * 0.6f + 0.4f);
+        for (const auto* e : v)
+        {
+            means->insertPoint(e->estimate.mean.x, e->estimate.mean.y, 0.001f);
+            for (const auto& p : e->particles()) parts->insertPoint(p.x, p.y, 0.0f);
+            auto ell = mrpt::opengl::CEllipsoid2D::Create();
+            ell->setCovMatrix(e->estimate.cov);
+            ell->setQuantiles(2.0f);  // 2-sigma
+            ell->setLocation(e->estimate.mean.x, e->estimate.mean.y, 0.002);
+            ell->setColor(r, g, b);
+            outObj.insert(ell);
+        }
+        outObj.insert(parts);
+        outObj.insert(means);
+    };
+    addSet(tags(), 0.1f, 0.3f, 0.9f);
+    addSet(landmarks(), 0.9f, 0.4f, 0.1f);
+}
+
+std::string CRFIDTagParticleMap::asString() const
+{
+    std::ostringstream s;
+    s << "rfir::maps::CRFIDTagParticleMap: " << m_tags.size() << " tags, "
+      << m_landmarks.size() << " landmarks ("
+      << (insertionOptions.estimator == TTagEstimatorKind::ParticleFilter
+              ? "particle_filter"
+              : "fixed_lag_smoother")
+      << ", L=" << insertionOptions.numParticles << ")";
+    return s.str();
+}

@@ -1,0 +1,69 @@
+/* rfir: likelihood of an HF RFID detection (SPEC section 2; eq. 5 of the PF-SLAM
+ * paper, eq. 3.7 of the thesis). */
+#pragma once
+
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/math/TPose2D.h>
+
+namespace rfir::models
+{
+/** One reader's detection rectangle in the robot frame: centre (x, y) and
+ * half-sizes (halfX, halfY), axis-aligned with the robot (metres). */
+struct ReaderArea
+{
+    double x = 0, y = 0;
+    double halfX = 0.03, halfY = 0.03;
+};
+
+enum class DetectionModel
+{
+    Step,     //!< the seeds' model: flat inside the rectangle, Gaussian tail
+    Gaussian  //!< a plain Gaussian around the reader centre
+};
+
+struct DetectionModelParams
+{
+    DetectionModel model = DetectionModel::Step;
+    /** Step model: gain of the tail so that w is about 1 at the edge. The seed
+     * uses 1.618 (sigma = 30 mm); exp(1/2) = 1.6487 would make it exactly 1. */
+    double beta = 1.618;
+    /** Gaussian model: sigma per axis = scale * half-size. */
+    double gaussianSigmaScale = 1.0;
+};
+
+/** Step model, log of eq. 3.7 with per-axis sigma = half-size:
+ *  0 if |ex| < hx and |ey| < hy, else log(beta) - ex^2/(2hx^2) - ey^2/(2hy^2).
+ * (ex, ey): tag minus reader centre, in the robot frame. */
+double stepDetectionLogLikelihood(double ex, double ey, double hx, double hy,
+                                  double beta);
+/** Gaussian model: -ex^2/(2sx^2) - ey^2/(2sy^2) (unnormalised, 0 at the centre). */
+double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy);
+
+/** Functor over both models. Likelihoods are unnormalised (max 1): only ratios
+ * between particles matter to the filters. */
+class DetectionLikelihood
+{
+public:
+    DetectionLikelihood() = default;
+    explicit DetectionLikelihood(const DetectionModelParams& p) : m_p(p) {}
+
+    /** (ex, ey) in the robot frame, half-sizes of the detecting reader. */
+    double logLikelihoodOffset(double ex, double ey, double hx, double hy) const;
+    /** Tag at `tag` (world), reader `r` placed by the robot pose `robot` (eq. 6
+     * of the PF-SLAM paper), offset rotated into the robot frame. */
+    double logLikelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                         const mrpt::math::TPoint2D& tag) const;
+    double likelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                      const mrpt::math::TPoint2D& tag) const;
+
+    const DetectionModelParams& params() const { return m_p; }
+
+private:
+    DetectionModelParams m_p;
+};
+
+/** World position of a reader's centre for a robot pose (eq. 6 of 003). */
+mrpt::math::TPoint2D readerCentreInWorld(const mrpt::math::TPose2D& robot,
+                                         const ReaderArea& r);
+
+}  // namespace rfir::models

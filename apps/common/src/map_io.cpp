@@ -101,7 +101,12 @@ TMapFile loadMapFile(const std::string& path)
             if (*e.sx < 0 || *e.sy < 0)
                 throw std::runtime_error(where + ": standard deviations must be >= 0");
         }
-        if (!seen.insert({int(e.kind), e.id}).second)
+        e.line = ln;
+        // A single-code emitter (ID 1..9) is a repeated-ID emitter: the same ID
+        // is installed at many places (textlog.md), so it may recur.
+        const bool repeatedEmitter = e.kind == TMapEntry::Kind::Emitter &&
+                                     e.id.size() == 1 && e.id[0] >= '1' && e.id[0] <= '9';
+        if (!repeatedEmitter && !seen.insert({int(e.kind), e.id}).second)
             throw std::runtime_error(where + ": duplicate " + std::string(t[0]) + " ID '" +
                                      e.id + "'");
         out.push_back(e);

@@ -15,6 +15,7 @@ struct TMapEntry
     std::string id;
     double x = 0, y = 0, z = 0;  //!< z only for emitters
     std::optional<double> sx, sy;  //!< standard deviations (estimated maps)
+    int line = 0;  //!< line in the file it was read from (0: not read from a file)
 };
 using TMapFile = std::vector<TMapEntry>;
 
@@ -26,7 +27,8 @@ bool isValidId(const std::string& id);
 void saveMapFile(const std::string& path, const TMapFile& m,
                  const std::string& headerComment = {});
 /** Reads a map / ground-truth file. Throws std::runtime_error("FILE:LINE: ...")
- * on a malformed line, an unknown record, a bad ID or a duplicate ID of one kind. */
+ * on a malformed line, an unknown record, a bad ID or a duplicate ID of one kind
+ * (except repeated-ID emitters, IDs 1..9, which recur by design). */
 TMapFile loadMapFile(const std::string& path);
 
 }  // namespace rfir::common

@@ -1,0 +1,224 @@
+#include "slam_app.h"
+
+#include <rfir/common/atomic_file.h>
+#include <rfir/common/map_io.h>
+#include <rfir/common/rawlog_io.h>
+#include <rfir/common/trajectory_io.h>
+#include <rfir/eval/metrics.h>
+#include <rfir/eval/plot.h>
+#include <rfir/eval/report.h>
+#include <rfir/slam/slam_engine.h>
+
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/system/filesystem.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace rfir::slamapp
+{
+using rfir::common::TMapEntry;
+using rfir::common::TMapFile;
+using rfir::common::TPath2D;
+
+namespace
+{
+std::string exeDir()
+{
+    char buf[4096];
+    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+    if (n <= 0) return ".";
+    buf[n] = 0;
+    return mrpt::system::extractFileDirectory(buf);
+}
+
+std::string withoutRawlogExt(const std::string& p)
+{
+    const std::string ext = ".rawlog";
+    if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
+        return p.substr(0, p.size() - ext.size());
+    return p;
+}
+
+struct TLoaded
+{
+    rfir::obs::CObservationLogHeader header;
+    std::vector<rfir::slam::TSlamInput> inputs;
+};
+
+TLoaded readInputs(const std::string& path)
+{
+    if (!mrpt::system::fileExists(path))
+        throw std::runtime_error("cannot read rawlog '" + path + "'");
+    rfir::common::CRawlogReader rd(path);
+    TLoaded l;
+    l.header = rd.header();
+    rfir::common::TRawlogStep st;
+    while (rd.next(st))
+    {
+        rfir::slam::TSlamInput in;
+        in.t = st.t;
+        in.odometryIncrement = st.odometryIncrement;
+        in.rfid = st.rfid;
+        in.rb = st.rb;
+        l.inputs.push_back(std::move(in));
+    }
+    if (l.inputs.empty()) throw std::runtime_error(path + ": no sensing instant");
+    return l;
+}
+
+TPath2D toPath(const rfir::slam::TSlamRun& run)
+{
+    TPath2D p;
+    for (const auto& [t, pose] : run.path) p.push_back({t, pose});
+    return p;
+}
+
+TMapFile toMap(const std::vector<rfir::slam::TLandmarkOut>& lms)
+{
+    TMapFile m;
+    for (const auto& l : lms)
+    {
+        TMapEntry e;
+        e.kind = l.isTag ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark;
+        e.id = l.id;
+        e.x = l.x;
+        e.y = l.y;
+        e.sx = l.sx;
+        e.sy = l.sy;
+        m.push_back(e);
+    }
+    return m;
+}
+
+std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
+                      const TMapFile& map, uint64_t seed)
+{
+    size_t tags = 0, lms = 0;
+    for (const auto& e : map) (e.kind == TMapEntry::Kind::Tag ? tags : lms)++;
+    std::ostringstream o;
+    o << std::setprecision(9) << "{\"method\": \"" << cfg.slam.method << "\", \"seed\": " << seed
+      << ", \"steps\": " << run.path.size() << ", \"tags_mapped\": " << tags
+      << ", \"landmarks_mapped\": " << lms
+      << ", \"robot_particles\": " << cfg.slam.robot_particles
+      << ", \"mean_update_time_s\": " << run.meanStepTime
+      << ", \"max_update_time_s\": " << run.maxStepTime
+      << ", \"total_time_s\": " << run.totalTime
+      << ", \"kidnap_resets\": " << run.resets << "}\n";
+    return o.str();
+}
+
+/** Ground truth beside the rawlog unless given. */
+void findGroundTruth(TAppArgs& a)
+{
+    const std::string base = withoutRawlogExt(a.rawlog);
+    if (!a.gtPath && mrpt::system::fileExists(base + ".gt.tum")) a.gtPath = base + ".gt.tum";
+    if (!a.gtMap && mrpt::system::fileExists(base + ".gt_map.txt"))
+        a.gtMap = base + ".gt_map.txt";
+}
+
+void evaluate(const TAppArgs& a, const std::string& label, const TPath2D& est,
+              const TMapFile& estMap, rfir::eval::TMapFigure& fig)
+{
+    rfir::eval::TEvalResult r;
+    r.label = label;
+    if (a.gtPath)
+    {
+        const TPath2D gt = rfir::common::loadTUM(*a.gtPath);
+        fig.gtPath = gt;
+        r.robot = rfir::eval::computeRobotErrors(est, gt);
+        const auto info = rfir::eval::readRawlogInfo(a.rawlog);
+        if (!info.odometry.empty())
+        {
+            const TPath2D odo = rfir::eval::alignOdometryAtStart(info.odometry, gt);
+            fig.odomPath = odo;
+            r.odometry = rfir::eval::computeRobotErrors(odo, gt);
+        }
+        if (a.gtMap)
+        {
+            const TMapFile gtm = rfir::common::loadMapFile(*a.gtMap);
+            fig.gtMap = gtm;
+            bool anyTag = false;
+            for (const auto& e : estMap) anyTag |= e.kind == TMapEntry::Kind::Tag;
+            const auto kind = anyTag || estMap.empty() ? TMapEntry::Kind::Tag
+                                                       : TMapEntry::Kind::Landmark;
+            r.map = rfir::eval::computeMapErrors(estMap, gtm, kind);
+            if (kind == TMapEntry::Kind::Tag && !info.readers.empty())
+                rfir::eval::setPassedOver(
+                    *r.map, rfir::eval::tagsPassedOver(gtm, gt, info.readers), estMap);
+            else if (kind == TMapEntry::Kind::Landmark && info.rbSensor)
+                rfir::eval::setPassedOver(
+                    *r.map, rfir::eval::landmarksInView(gtm, gt, *info.rbSensor), estMap);
+        }
+    }
+    else if (a.gtMap)
+        std::cerr << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
+    if (!r.robot) return;
+    std::cout << rfir::eval::formatErrorTable({r});
+    rfir::common::writeFileAtomically(a.outDir + "/errors.json", [&](std::ostream& o) {
+        o << rfir::eval::toJson(r) << "\n";
+    });
+}
+}  // namespace
+
+std::string stockConfigPath(const std::string& method)
+{
+    const std::string m = method == "fastslam" ? "fastslam" : method == "ps" ? "ps" : "pf";
+    return exeDir() + "/../share/rfir/config_ini/slam_" + m + ".ini";
+}
+
+int runSlamApp(const TAppArgs& args)
+{
+    TAppArgs a = args;
+    if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
+    const std::string ini = a.config ? *a.config : stockConfigPath(a.method.value_or("pf"));
+    rfir::slam::TSlamConfig cfg = rfir::slam::loadSlamConfigFile(ini, a.method);
+    cfg.seed = a.seed;
+    mrpt::random::getRandomGenerator().randomize(uint32_t(a.seed));
+    findGroundTruth(a);
+
+    std::cerr << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "
+              << ini << ", seed " << a.seed << ")\n";
+    const TLoaded data = readInputs(a.rawlog);
+    const mrpt::poses::CPose2D start =
+        a.start ? *a.start : data.header.startPose.value_or(mrpt::poses::CPose2D());
+    auto engine = rfir::slam::makeEngine(cfg, data.header);
+    const size_t n = data.inputs.size();
+    const auto run = rfir::slam::runEngine(*engine, start, data.inputs, [n](size_t i) {
+        if ((i + 1) % std::max<size_t>(1, n / 20) == 0 || i + 1 == n)
+            std::cerr << "\rrfir-slam: step " << (i + 1) << "/" << n << std::flush;
+    });
+    std::cerr << "\n";
+
+    if (!mrpt::system::directoryExists(a.outDir) &&
+        !mrpt::system::createDirectory(a.outDir))
+        throw std::runtime_error("cannot create output folder '" + a.outDir + "'");
+    const TPath2D path = toPath(run);
+    const TMapFile map = toMap(run.map);
+    rfir::common::saveTUM(a.outDir + "/path.tum", path);
+    rfir::common::saveMapFile(a.outDir + "/map.txt", map,
+                              "rfir-slam " + cfg.slam.method + ": tag id x y sx sy");
+    const std::string settings = rfir::slam::dumpSlamConfig(cfg);
+    rfir::common::writeFileAtomically(a.outDir + "/settings.ini",
+                                      [&](std::ostream& o) { o << settings; });
+    rfir::common::writeFileAtomically(a.outDir + "/stats.json", [&](std::ostream& o) {
+        o << statsJson(cfg, run, map, a.seed);
+    });
+    rfir::eval::TMapFigure fig;
+    fig.title = "rfir-slam " + cfg.slam.method + ": " +
+                mrpt::system::extractFileName(a.rawlog);
+    fig.estPath = path;
+    fig.estMap = map;
+    evaluate(a, cfg.slam.method, path, map, fig);
+    rfir::eval::plotMapFigure(a.outDir + "/path_map.png", fig);
+    std::cerr << "rfir-slam: " << run.path.size() << " steps, " << map.size()
+              << " landmarks, " << std::fixed << std::setprecision(2)
+              << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir << "\n";
+    return 0;
+}
+
+}  // namespace rfir::slamapp

@@ -1,0 +1,29 @@
+/* rfir-slam: the steps of one run, separate from the command line. */
+#pragma once
+
+#include <rfir/slam/slam_config.h>
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <optional>
+#include <string>
+
+namespace rfir::slamapp
+{
+struct TAppArgs
+{
+    std::string rawlog, outDir;
+    std::optional<std::string> method, config, gtPath, gtMap;
+    uint64_t seed = 1;
+    std::optional<mrpt::poses::CPose2D> start;
+};
+
+/** The stock INI of a method: <exe_dir>/../share/rfir/config_ini/slam_<m>.ini
+ * (fastslam for fastslam, ps for ps, pf otherwise). */
+std::string stockConfigPath(const std::string& method);
+
+/** Runs SLAM and writes every output; returns the process exit code.
+ * Throws std::exception with a message for the user on bad input. */
+int runSlamApp(const TAppArgs& a);
+
+}  // namespace rfir::slamapp

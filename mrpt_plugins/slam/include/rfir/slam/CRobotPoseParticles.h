@@ -1,0 +1,67 @@
+/* rfir: the robot filter of PF-SLAM and PS-SLAM (SPEC section 4; 003
+ * Algorithm 1 lines 2-4 and 19-28; 004 Algorithm 1) on MRPT's particle-filter
+ * machinery: CParticleFilter::executeOn drives this class, which moves the
+ * particles with the odometry model and weighs them with the landmark map's
+ * computeObservationLikelihood (the map receives the ROBOT pose). */
+#pragma once
+
+#include <mrpt/bayes/CParticleFilterCapable.h>
+#include <mrpt/bayes/CParticleFilterData.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <functional>
+#include <vector>
+
+namespace rfir::slam
+{
+using TPoseParticleData =
+    mrpt::bayes::CParticleFilterData<mrpt::poses::CPose2D,
+                                     mrpt::bayes::particle_storage_mode::VALUE>;
+
+class CRobotPoseParticles
+    : public TPoseParticleData,
+      public mrpt::bayes::CParticleFilterDataImpl<CRobotPoseParticles,
+                                                  TPoseParticleData::CParticleList>
+{
+public:
+    /** M particles at `start`, with Gaussian spread (std) in xy and heading. */
+    void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi);
+
+    /** The map and observations the next executeOn step weighs with (none:
+     * motion only). The map must outlive the step. */
+    void setWeighing(const mrpt::maps::CMetricMap* map,
+                     std::vector<mrpt::obs::CObservation::Ptr> obs)
+    {
+        map_ = map;
+        obs_ = std::move(obs);
+    }
+    /** Called after the motion and before the weighing, with the predicted
+     * weighted mean: where the literal PF-SLAM order updates the tags. */
+    std::function<void(const mrpt::poses::CPose2D&)> afterMotion;
+
+    mrpt::poses::CPose2D meanPose() const;
+    /** Per-particle log-likelihoods of the last weighing (empty if none). */
+    const std::vector<double>& lastLogLik() const { return lastLL_; }
+    /** Mean of the poses after motion, before weighing, in the last step. */
+    const mrpt::poses::CPose2D& predictedMean() const { return predicted_; }
+
+    /** Replaces particle i's pose, giving it the current best weight (sensor
+     * resetting). */
+    void replacePose(size_t i, const mrpt::poses::CPose2D& p);
+
+protected:
+    void prediction_and_update_pfStandardProposal(
+        const mrpt::obs::CActionCollection* action,
+        const mrpt::obs::CSensoryFrame* observation,
+        const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o) override;
+
+private:
+    const mrpt::maps::CMetricMap* map_ = nullptr;
+    std::vector<mrpt::obs::CObservation::Ptr> obs_;
+    std::vector<double> lastLL_;
+    mrpt::poses::CPose2D predicted_;
+};
+
+}  // namespace rfir::slam

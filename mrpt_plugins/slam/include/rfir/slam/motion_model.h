@@ -1,0 +1,45 @@
+/* rfir: the robot motion model, SPEC section 3 (eq. 7 in 003, eq. 3.6 in the
+ * thesis): the pose moves by the odometry increment plus Gaussian noise. We use
+ * MRPT's Gaussian odometry model (CActionRobotMovement2D, model "gaussian"),
+ * whose noise grows with the distance and the turn of each increment. */
+#pragma once
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <optional>
+
+namespace rfir::slam
+{
+/** INI section [motion]: the std of an increment (d: its length, |phi|: its
+ * turn) is a1*d + a2*|phi| + min_std_xy in x and y, a3*d + a4*|phi| +
+ * min_std_phi in heading (MRPT's Gaussian model). */
+struct TMotionOptions : public mrpt::config::CLoadableOptions
+{
+    double a1 = 0.05;         //!< m of xy std per m travelled
+    double a2 = 0.001;        //!< m of xy std per rad turned
+    double a3 = 0.02;         //!< rad of heading std per m travelled
+    double a4 = 0.02;         //!< rad of heading std per rad turned
+    double min_std_xy = 0.001;   //!< m
+    double min_std_phi = 0.002;  //!< rad
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                            const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                          const std::string& s) const override;
+    /** Rejects negative values, naming the key. */
+    void validate(const std::string& section) const;
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions toMRPT() const;
+};
+
+/** The Gaussian movement for an odometry increment, with our noise model. */
+mrpt::obs::CActionRobotMovement2D makeMovement(const mrpt::poses::CPose2D& increment,
+                                               const TMotionOptions& opts);
+
+/** The odometry increment carried by an action collection, if any. */
+std::optional<mrpt::poses::CPose2D> odometryIncrement(
+    const mrpt::obs::CActionCollection* acts);
+
+}  // namespace rfir::slam

@@ -1,0 +1,83 @@
+/* rfir: the [slam] section shared by every method: the robot filter. */
+#pragma once
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <string>
+#include <vector>
+
+namespace rfir::slam
+{
+enum class TMethod
+{
+    PF,        //!< PF-SLAM: robot particle filter + per-tag particle filters
+    PS,        //!< PS-SLAM: robot particle filter + per-tag fixed-lag smoothers
+    FastSLAM,  //!< FastSLAM 1.0 baseline: one EKF per tag per robot particle
+    Odometry   //!< dead reckoning (tags mapped from odometry poses), for comparison
+};
+TMethod parseMethod(const std::string& name);  //!< throws naming [slam] method
+std::string methodName(TMethod m);
+
+/** Resampling scheme by name: MRPT's enum names (prSystematic, ...) or the
+ * short ones (multinomial, residual, stratified, systematic). */
+mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm parseResampling(
+    const std::string& name);
+std::string resamplingName(mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm r);
+
+/** INI section [slam]. */
+struct TSlamOptions : public mrpt::config::CLoadableOptions
+{
+    std::string method = "pf";
+    unsigned robot_particles = 500;  //!< M (SPEC section 4)
+    std::string resampling = "systematic";
+    /** Resample when the normalised effective sample size drops below this;
+     * 1 resamples on every step, as the seeds' algorithms do. */
+    double resample_ess = 0.5;
+    double start_std_xy = 0.0;   //!< m, initial spread about the start pose
+    double start_std_phi = 0.0;  //!< rad
+    /** PF/PS with a weigh-first policy: the robot pose the tags are updated
+     * with, "posterior" (after weighing) or "predicted" (before). */
+    std::string tag_update_pose = "posterior";
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                            const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                          const std::string& s) const override;
+    /** The CParticleFilter options these settings imply. */
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions pfOptions() const;
+};
+
+/** Weighted mean of poses (circular mean of the headings), weights given as
+ * logs; `get(i)` returns pose i. */
+template <class GetPose>
+mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
+                                      GetPose get);
+
+}  // namespace rfir::slam
+
+#include <cmath>
+namespace rfir::slam
+{
+template <class GetPose>
+mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
+                                      GetPose get)
+{
+    double mx = -1e300;
+    for (size_t i = 0; i < n; i++) mx = std::max(mx, logw[i]);
+    double sw = 0, x = 0, y = 0, c = 0, s = 0;
+    for (size_t i = 0; i < n; i++)
+    {
+        const double w = std::exp(logw[i] - mx);
+        const mrpt::poses::CPose2D& p = get(i);
+        sw += w;
+        x += w * p.x();
+        y += w * p.y();
+        c += w * std::cos(p.phi());
+        s += w * std::sin(p.phi());
+    }
+    if (sw <= 0) return get(0);
+    return {x / sw, y / sw, std::atan2(s, c)};
+}
+}  // namespace rfir::slam

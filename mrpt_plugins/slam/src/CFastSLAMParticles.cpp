@@ -1,0 +1,149 @@
+#include <rfir/slam/CFastSLAMParticles.h>
+#include <rfir/slam/slam_options.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <rfir/slam/ini_check.h>
+
+namespace rfir::slam
+{
+void TFastSLAMOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                          const std::string& s)
+{
+    meas.rfidStdFactor = c.read_double(s, "rfid_std_factor", meas.rfidStdFactor);
+    meas.rbStdRange = c.read_double(s, "rb_std_range", meas.rbStdRange);
+    meas.rbStdBearing = c.read_double(s, "rb_std_bearing", meas.rbStdBearing);
+    if (!(meas.rfidStdFactor > 0)) badSetting(s, "rfid_std_factor", "must be > 0");
+    if (!(meas.rbStdRange > 0)) badSetting(s, "rb_std_range", "must be > 0");
+    if (!(meas.rbStdBearing > 0)) badSetting(s, "rb_std_bearing", "must be > 0");
+}
+
+void TFastSLAMOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                        const std::string& s) const
+{
+    c.write(s, "rfid_std_factor", meas.rfidStdFactor, 16, 16,
+            "RFID: tag std about the reader centre / half side");
+    c.write(s, "rb_std_range", meas.rbStdRange, 16, 16,
+            "range std [m] when the observation gives none");
+    c.write(s, "rb_std_bearing", meas.rbStdBearing, 16, 16,
+            "bearing std [rad] when the observation gives none");
+}
+
+void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
+                               double stdPhi)
+{
+    auto& rng = mrpt::random::getRandomGenerator();
+    m_particles.assign(M, {});
+    for (auto& p : m_particles)
+    {
+        p.log_w = 0;
+        p.d.pose = start + mrpt::poses::CPose2D(0, 0, 0);
+        if (stdXY > 0 || stdPhi > 0)
+            p.d.pose = mrpt::poses::CPose2D(start.x() + rng.drawGaussian1D(0, stdXY),
+                                            start.y() + rng.drawGaussian1D(0, stdXY),
+                                            start.phi() + rng.drawGaussian1D(0, stdPhi));
+    }
+    index_.clear();
+    names_.clear();
+    isTag_.clear();
+}
+
+size_t CFastSLAMParticles::indexOf(const TDetection& d)
+{
+    // Tags and range-bearing landmarks are separate name spaces.
+    const std::string key = (d.kind == TDetection::Kind::RFID ? "t:" : "l:") + d.id;
+    auto it = index_.find(key);
+    if (it != index_.end()) return it->second;
+    index_[key] = names_.size();
+    names_.push_back(d.id);
+    isTag_.push_back(d.kind == TDetection::Kind::RFID);
+    return names_.size() - 1;
+}
+
+double CFastSLAMParticles::updateParticle(TFastSLAMParticle& p,
+                                          const std::vector<size_t>& idx)
+{
+    double logLik = 0;
+    for (size_t k = 0; k < idx.size(); k++)
+    {
+        const TDetection& d = (*detections_)[k];
+        const TLandmarkEKF* old = p.landmarks.get(idx[k]);
+        if (!old)
+        {
+            // A new landmark: every particle sees it now, so its importance
+            // factor is a common constant and is left out.
+            p.landmarks.set(idx[k], std::make_shared<const TLandmarkEKF>(
+                                        model_.initialize(d, p.pose)));
+            continue;
+        }
+        auto lm = std::make_shared<TLandmarkEKF>(*old);  // the one copy of an update
+        logLik += ekfUpdate(*lm, model_.linearize(d, p.pose, lm->mean));
+        p.landmarks.set(idx[k], std::move(lm));
+    }
+    return logLik;
+}
+
+void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
+    const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
+    const mrpt::bayes::CParticleFilter::TParticleFilterOptions&)
+{
+    if (auto mv = action ? action->getBestMovementEstimation() : nullptr)
+    {
+        mv->prepareFastDrawSingleSamples();
+        mrpt::poses::CPose2D inc;
+        for (auto& p : m_particles)
+        {
+            mv->fastDrawSingleSample(inc);
+            p.d.pose = p.d.pose + inc;
+        }
+    }
+    lastMaxLogLik_ = 0;
+    if (!detections_ || detections_->empty()) return;
+    std::vector<size_t> idx;
+    for (const auto& d : *detections_) idx.push_back(indexOf(d));
+    double best = -1e300;
+    for (auto& p : m_particles)
+    {
+        const double ll = updateParticle(p.d, idx);
+        p.log_w += ll;
+        best = std::max(best, ll);
+    }
+    lastMaxLogLik_ = best / double(detections_->size());
+}
+
+mrpt::poses::CPose2D CFastSLAMParticles::meanPose() const
+{
+    std::vector<double> lw(m_particles.size());
+    for (size_t i = 0; i < lw.size(); i++) lw[i] = m_particles[i].log_w;
+    return weightedMeanPose(m_particles.size(), lw,
+                            [&](size_t i) -> const mrpt::poses::CPose2D& {
+                                return m_particles[i].d.pose;
+                            });
+}
+
+std::vector<CFastSLAMParticles::TLandmarkEstimate> CFastSLAMParticles::landmarks() const
+{
+    std::vector<double> w(m_particles.size());
+    double mx = -1e300, sw = 0;
+    for (const auto& p : m_particles) mx = std::max(mx, p.log_w);
+    for (size_t i = 0; i < w.size(); i++) sw += (w[i] = std::exp(m_particles[i].log_w - mx));
+    std::vector<TLandmarkEstimate> out;
+    for (size_t j = 0; j < names_.size(); j++)
+    {
+        TLandmarkEstimate e{names_[j], isTag_[j], Eigen::Vector2d::Zero(), Eigen::Matrix2d::Zero()};
+        for (size_t i = 0; i < w.size(); i++)
+            if (auto* lm = m_particles[i].d.landmarks.get(j)) e.mean += w[i] / sw * lm->mean;
+        for (size_t i = 0; i < w.size(); i++)
+            if (auto* lm = m_particles[i].d.landmarks.get(j))
+            {
+                const Eigen::Vector2d dm = lm->mean - e.mean;
+                e.cov += w[i] / sw * (lm->cov + dm * dm.transpose());
+            }
+        out.push_back(e);
+    }
+    return out;
+}
+
+}  // namespace rfir::slam

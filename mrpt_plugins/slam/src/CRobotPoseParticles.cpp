@@ -1,0 +1,82 @@
+#include <rfir/slam/CRobotPoseParticles.h>
+#include <rfir/slam/slam_options.h>
+
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rfir::slam
+{
+void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
+                                double stdPhi)
+{
+    auto& rng = mrpt::random::getRandomGenerator();
+    m_particles.assign(M, {});
+    for (auto& p : m_particles)
+    {
+        p.log_w = 0;
+        p.d = start;
+        if (stdXY > 0 || stdPhi > 0)
+            p.d = mrpt::poses::CPose2D(start.x() + rng.drawGaussian1D(0, stdXY),
+                                       start.y() + rng.drawGaussian1D(0, stdXY),
+                                       start.phi() + rng.drawGaussian1D(0, stdPhi));
+    }
+    lastLL_.clear();
+    predicted_ = start;
+}
+
+mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const
+{
+    std::vector<double> lw(m_particles.size());
+    for (size_t i = 0; i < lw.size(); i++) lw[i] = m_particles[i].log_w;
+    return weightedMeanPose(m_particles.size(), lw,
+                            [&](size_t i) -> const mrpt::poses::CPose2D& {
+                                return m_particles[i].d;
+                            });
+}
+
+void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p)
+{
+    double best = -1e300;
+    for (const auto& q : m_particles) best = std::max(best, q.log_w);
+    m_particles.at(i).d = p;
+    m_particles.at(i).log_w = best;
+}
+
+void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
+    const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
+    const mrpt::bayes::CParticleFilter::TParticleFilterOptions&)
+{
+    // Motion model (SPEC section 3): one draw of the odometry increment's
+    // Gaussian per particle.
+    if (auto mv = action ? action->getBestMovementEstimation() : nullptr)
+    {
+        mv->prepareFastDrawSingleSamples();
+        mrpt::poses::CPose2D inc;
+        for (auto& p : m_particles)
+        {
+            mv->fastDrawSingleSample(inc);
+            p.d = p.d + inc;
+        }
+    }
+    predicted_ = meanPose();
+    if (afterMotion) afterMotion(predicted_);
+    lastLL_.clear();
+    if (!map_ || obs_.empty()) return;
+    lastLL_.resize(m_particles.size());
+    for (size_t i = 0; i < m_particles.size(); i++)
+    {
+        const mrpt::poses::CPose3D pose(m_particles[i].d);
+        double ll = 0;
+        for (const auto& o : obs_) ll += map_->computeObservationLikelihood(*o, pose);
+        if (!std::isfinite(ll))
+            throw std::runtime_error("the landmark map returned a non-finite log-likelihood");
+        lastLL_[i] = ll;
+        m_particles[i].log_w += ll;
+    }
+}
+
+}  // namespace rfir::slam

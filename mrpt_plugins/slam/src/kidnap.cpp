@@ -1,0 +1,98 @@
+#include <rfir/slam/ini_check.h>
+#include <rfir/slam/kidnap.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <cmath>
+
+namespace rfir::slam
+{
+void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                        const std::string& s)
+{
+    enabled = c.read_bool(s, "enabled", enabled);
+    collapse_loglik = c.read_double(s, "collapse_loglik", collapse_loglik);
+    const int k = c.read_int(s, "collapse_steps", int(collapse_steps));
+    if (k <= 0) badSetting(s, "collapse_steps", "must be a positive count");
+    collapse_steps = unsigned(k);
+    inject_fraction = c.read_double(s, "inject_fraction", inject_fraction);
+    if (!(inject_fraction > 0 && inject_fraction <= 1))
+        badSetting(s, "inject_fraction", "must be in (0, 1]");
+    keep_heading_share = c.read_double(s, "keep_heading_share", keep_heading_share);
+    if (!(keep_heading_share >= 0 && keep_heading_share <= 1))
+        badSetting(s, "keep_heading_share", "must be in [0, 1]");
+    heading_std = c.read_double(s, "heading_std", heading_std);
+    if (!(heading_std >= 0)) badSetting(s, "heading_std", "must be >= 0");
+}
+
+void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                      const std::string& s) const
+{
+    c.write(s, "enabled", enabled, 16, 16, "sensor resetting on collapse");
+    c.write(s, "collapse_loglik", collapse_loglik, 16, 16,
+            "lost if best mean log-lik per known detection is below this...");
+    c.write(s, "collapse_steps", int(collapse_steps), 16, 16,
+            "...for this many steps in a row");
+    c.write(s, "inject_fraction", inject_fraction, 16, 16,
+            "share of robot particles redrawn from detections");
+    c.write(s, "keep_heading_share", keep_heading_share, 16, 16,
+            "share of those keeping the current heading");
+    c.write(s, "heading_std", heading_std, 16, 16, "their heading std [rad]");
+}
+
+bool CKidnapMonitor::update(std::optional<double> bestMeanLogLik)
+{
+    if (!o_.enabled || !bestMeanLogLik) return false;
+    if (*bestMeanLogLik >= o_.collapse_loglik)
+    {
+        bad_ = 0;
+        return false;
+    }
+    if (++bad_ < o_.collapse_steps) return false;
+    bad_ = 0;
+    ++resets_;
+    return true;
+}
+
+mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
+                                    mrpt::random::CRandomGenerator& rng)
+{
+    const TDetection& d = a.det;
+    double sx, sy;  // the landmark seen from the pose, robot frame
+    if (d.kind == TDetection::Kind::RFID)
+    {
+        sx = d.a + rng.drawUniform(-d.halfX, d.halfX);
+        sy = d.b + rng.drawUniform(-d.halfY, d.halfY);
+    }
+    else
+    {
+        const double r = d.a + rng.drawGaussian1D(0, std::max(d.stdRange, 1e-3));
+        const double b = d.b + rng.drawGaussian1D(0, std::max(d.stdBearing, 1e-3));
+        const mrpt::poses::CPose2D p =
+            d.sensor + mrpt::poses::CPose2D(r * std::cos(b), r * std::sin(b), 0);
+        sx = p.x();
+        sy = p.y();
+    }
+    const double c = std::cos(phi), s = std::sin(phi);
+    return {a.x - (c * sx - s * sy), a.y - (s * sx + c * sy), phi};
+}
+
+std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& anchors,
+                                                 size_t n, double currentPhi,
+                                                 const TKidnapOptions& o,
+                                                 mrpt::random::CRandomGenerator& rng)
+{
+    std::vector<mrpt::poses::CPose2D> out;
+    if (anchors.empty()) return out;
+    for (size_t i = 0; i < n; i++)
+    {
+        const TAnchor& a = anchors[rng.drawUniform32bit() % anchors.size()];
+        const double phi = rng.drawUniform(0, 1) < o.keep_heading_share
+                               ? currentPhi + rng.drawGaussian1D(0, o.heading_std)
+                               : rng.drawUniform(-M_PI, M_PI);
+        out.push_back(poseFromAnchor(a, mrpt::math::wrapToPi(phi), rng));
+    }
+    return out;
+}
+
+}  // namespace rfir::slam

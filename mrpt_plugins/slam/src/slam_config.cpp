@@ -1,0 +1,76 @@
+#include <rfir/slam/ini_check.h>
+#include <rfir/slam/slam_config.h>
+#include <rfir/slam/tagmap_engine.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/system/filesystem.h>
+
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+namespace rfir::slam
+{
+namespace
+{
+template <class Opts>
+void loadSection(Opts& o, const mrpt::config::CConfigFileBase& ini, const std::string& s)
+{
+    loadStrict(o, ini, s);
+}
+}  // namespace
+
+TSlamConfig loadSlamConfig(const mrpt::config::CConfigFileBase& ini,
+                           const std::optional<std::string>& methodOverride)
+{
+    TSlamConfig c;
+    std::vector<std::string> sections;
+    ini.getAllSections(sections);
+    const std::set<std::string> ours = {"slam", "motion", "kidnap", "fastslam"};
+    const std::set<std::string> mapSections = tagMapSections();
+    for (const auto& s : sections)
+        if (!s.empty() && !ours.count(s) && !mapSections.count(s))
+            throw std::invalid_argument("unknown section [" + s + "] (known: slam, motion, "
+                                        "kidnap, fastslam, " + joinSections(mapSections) +
+                                        ")");
+    loadSection(c.slam, ini, "slam");
+    if (methodOverride)
+    {
+        parseMethod(*methodOverride);
+        c.slam.method = *methodOverride;
+    }
+    loadSection(c.motion, ini, "motion");
+    loadSection(c.kidnap, ini, "kidnap");
+    loadSection(c.fastslam, ini, "fastslam");
+    c.tagmap = loadTagMapOptions(ini, c.method());
+    return c;
+}
+
+TSlamConfig loadSlamConfigFile(const std::string& path,
+                               const std::optional<std::string>& methodOverride)
+{
+    if (!mrpt::system::fileExists(path))
+        throw std::invalid_argument("cannot read INI file '" + path + "'");
+    mrpt::config::CConfigFile f(path);
+    try
+    {
+        return loadSlamConfig(f, methodOverride);
+    }
+    catch (const std::exception& e)
+    {
+        throw std::invalid_argument(path + ": " + e.what());
+    }
+}
+
+std::string dumpSlamConfig(const TSlamConfig& cfg)
+{
+    mrpt::config::CConfigFileMemory mem;
+    cfg.slam.saveToConfigFile(mem, "slam");
+    cfg.motion.saveToConfigFile(mem, "motion");
+    cfg.kidnap.saveToConfigFile(mem, "kidnap");
+    cfg.fastslam.saveToConfigFile(mem, "fastslam");
+    return mem.getContent() + "\n" + dumpTagMapOptions(cfg.tagmap, cfg.seed);
+}
+
+}  // namespace rfir::slam

@@ -1,0 +1,228 @@
+#include <rfir/maps/CRFIDTagParticleMap.h>
+#include <rfir/slam/CRobotPoseParticles.h>
+#include <rfir/slam/slam_engine.h>
+#include <rfir/slam/tagmap_engine.h>
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace rfir::slam
+{
+using rfir::maps::CRFIDTagParticleMap;
+
+struct TTagMapSettings
+{
+    CRFIDTagParticleMap::TInsertionOptions insertion;
+    CRFIDTagParticleMap::TLikelihoodOptions likelihood;
+};
+
+namespace
+{
+/** Kidnap check: the best particle's mean log-likelihood per detection of a
+ * landmark the map already has, and those detections as anchors. */
+struct TConsistency
+{
+    std::optional<double> bestMeanLogLik;
+    std::vector<TAnchor> anchors;
+};
+
+TConsistency checkConsistency(const CRFIDTagParticleMap& map,
+                              const CRobotPoseParticles& pf,
+                              const std::vector<TDetection>& dets)
+{
+    TConsistency c;
+    std::vector<const CRFIDTagParticleMap::TTagEntry*> known;
+    for (const auto& d : dets)
+    {
+        const auto* e = d.kind == TDetection::Kind::RFID ? map.getTag(d.id)
+                                                         : map.getLandmark(d.id);
+        if (!e) continue;
+        known.push_back(e);
+        c.anchors.push_back({d, e->estimate.mean.x, e->estimate.mean.y});
+    }
+    if (known.empty()) return c;
+    const auto& rb = map.likelihoodOptions.rangeBearing;
+    double best = -1e300;
+    for (const auto& p : pf.m_particles)
+    {
+        const mrpt::math::TPose2D pose = p.d.asTPose();
+        double ll = 0;
+        for (size_t k = 0; k < known.size(); k++)
+        {
+            const TDetection& d = c.anchors[k].det;
+            if (d.kind == TDetection::Kind::RFID)
+                ll += map.detectionLogLikelihood(*known[k], pose,
+                                                 {d.a, d.b, d.halfX, d.halfY});
+            else
+                ll += rfir::models::rangeBearingLogLikelihood(
+                    (p.d + d.sensor).asTPose(), known[k]->estimate.mean, d.a, d.b, rb);
+        }
+        best = std::max(best, ll);
+    }
+    c.bestMeanLogLik = best / double(known.size());
+    return c;
+}
+
+class CTagMapEngine : public CSlamEngine
+{
+public:
+    CTagMapEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
+        : cfg_(c), hdr_(h), kidnap_(c.kidnap)
+    {
+        filter_.m_options = c.slam.pfOptions();
+        rng_.randomize(c.seed + 7919);
+    }
+    void reset(const mrpt::poses::CPose2D& start) override
+    {
+        map_.clear();
+        map_.insertionOptions = cfg_.tagmap->insertion;
+        map_.likelihoodOptions = cfg_.tagmap->likelihood;
+        map_.setRandomSeed(cfg_.seed);
+        map_.setLandmarkNames(hdr_.rbLandmarkNames);
+        pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
+                  cfg_.slam.start_std_phi);
+        kidnap_ = CKidnapMonitor(cfg_.kidnap);
+        pose_ = start;
+    }
+    void step(const TSlamInput& in) override;
+    mrpt::poses::CPose2D pose() const override { return pose_; }
+    std::vector<TLandmarkOut> landmarks() const override;
+    size_t resets() const override { return kidnap_.resets(); }
+
+private:
+    void beforeWeighing(const std::vector<TDetection>& dets, bool literal,
+                        const mrpt::poses::CPose2D& predicted);
+    void insert(const mrpt::poses::CPose2D& at)
+    {
+        for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
+    }
+
+    TSlamConfig cfg_;
+    rfir::obs::CObservationLogHeader hdr_;
+    CRFIDTagParticleMap map_;
+    CRobotPoseParticles pf_;
+    mrpt::bayes::CParticleFilter filter_;
+    CKidnapMonitor kidnap_;
+    mrpt::random::CRandomGenerator rng_;
+    std::vector<mrpt::obs::CObservation::Ptr> obs_;
+    bool mapThisStep_ = true;
+    mrpt::poses::CPose2D pose_;
+};
+
+void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool literal,
+                                   const mrpt::poses::CPose2D& predicted)
+{
+    const TConsistency c = checkConsistency(map_, pf_, dets);
+    const bool reset = kidnap_.update(c.bestMeanLogLik);
+    // While the detections contradict every particle, the map is not updated
+    // (it would be updated from a wrong pose).
+    mapThisStep_ = !reset && !kidnap_.suspicious();
+    if (reset)
+    {
+        const size_t M = pf_.m_particles.size();
+        const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
+        const auto poses =
+            resettingPoses(c.anchors, n, predicted.phi(), cfg_.kidnap, rng_);
+        for (size_t k = 0; k < poses.size(); k++)
+            pf_.replacePose(rng_.drawUniform32bit() % M, poses[k]);
+    }
+    if (literal && mapThisStep_) insert(predicted);
+}
+
+void CTagMapEngine::step(const TSlamInput& in)
+{
+    obs_.clear();
+    std::vector<TDetection> dets;
+    if (in.rfid)
+    {
+        obs_.push_back(in.rfid);
+        appendDetections(*in.rfid, dets);
+    }
+    if (in.rb)
+    {
+        obs_.push_back(in.rb);
+        appendDetections(*in.rb, hdr_, dets);
+    }
+    if (cfg_.method() == TMethod::Odometry)
+    {
+        // Dead reckoning: map the tags from the odometry poses, no correction.
+        if (in.odometryIncrement) pose_ = pose_ + *in.odometryIncrement;
+        insert(pose_);
+        return;
+    }
+    const bool literal = map_.updateTagsBeforeWeighing();
+    pf_.afterMotion = [&](const mrpt::poses::CPose2D& predicted) {
+        beforeWeighing(dets, literal, predicted);
+    };
+    pf_.setWeighing(&map_, obs_);
+    mrpt::obs::CActionCollection acts;
+    if (in.odometryIncrement) acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
+    filter_.executeOn(pf_, &acts, nullptr);
+    pf_.afterMotion = nullptr;
+    pf_.setWeighing(nullptr, {});
+    pose_ = pf_.meanPose();
+    if (!literal && mapThisStep_)
+        insert(cfg_.slam.tag_update_pose == "predicted" ? pf_.predictedMean() : pose_);
+}
+
+std::vector<TLandmarkOut> CTagMapEngine::landmarks() const
+{
+    std::vector<TLandmarkOut> out;
+    auto add = [&](const CRFIDTagParticleMap::TTagEntry* e, bool isTag) {
+        const auto& est = e->estimate;
+        out.push_back({isTag, e->id, est.mean.x, est.mean.y,
+                       std::sqrt(std::max(0.0, est.cov(0, 0))),
+                       std::sqrt(std::max(0.0, est.cov(1, 1)))});
+    };
+    for (const auto* e : map_.tags()) add(e, true);
+    for (const auto* e : map_.landmarks()) add(e, false);
+    return out;
+}
+}  // namespace
+
+std::set<std::string> tagMapSections() { return {"tagmap", "tagmap_likelihood"}; }
+
+std::string joinSections(const std::set<std::string>& s)
+{
+    std::string r;
+    for (const auto& x : s) r += (r.empty() ? "" : ", ") + x;
+    return r;
+}
+
+std::shared_ptr<TTagMapSettings> loadTagMapOptions(const mrpt::config::CConfigFileBase& ini,
+                                                   TMethod method)
+{
+    auto s = std::make_shared<TTagMapSettings>();
+    s->insertion.loadFromConfigFile(ini, "tagmap");
+    s->likelihood.loadFromConfigFile(ini, "tagmap_likelihood");
+    // The estimator follows the method: per-tag filters for pf, smoothers for ps.
+    s->insertion.estimator = method == TMethod::PS
+                                 ? rfir::maps::TTagEstimatorKind::FixedLagSmoother
+                                 : rfir::maps::TTagEstimatorKind::ParticleFilter;
+    return s;
+}
+
+std::string dumpTagMapOptions(const std::shared_ptr<TTagMapSettings>& s, uint64_t seed)
+{
+    if (!s) return {};
+    auto ins = s->insertion;
+    ins.seed = seed;  // the map's draws follow the run's --seed
+    std::ostringstream o;
+    o << "[tagmap]\n";
+    ins.dumpToTextStream(o);
+    o << "\n[tagmap_likelihood]\n";
+    s->likelihood.dumpToTextStream(o);
+    return o.str();
+}
+
+std::unique_ptr<CSlamEngine> makeTagMapEngine(const TSlamConfig& cfg,
+                                              const rfir::obs::CObservationLogHeader& hdr)
+{
+    return std::make_unique<CTagMapEngine>(cfg, hdr);
+}
+
+}  // namespace rfir::slam

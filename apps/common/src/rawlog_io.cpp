@@ -13,6 +13,43 @@ namespace rfir::common
 {
 using namespace mrpt::obs;
 
+namespace
+{
+/** A gz stream only reports EOF after a read has failed, so the reader takes
+ * one byte to tell "no more objects" from "object cut short", then hands that
+ * byte back to the archive through this wrapper. */
+class CPushbackStream : public mrpt::io::CStream
+{
+public:
+    CPushbackStream(mrpt::io::CStream& s, uint8_t first) : s_(s), first_(first) {}
+    size_t Read(void* buf, size_t n) override
+    {
+        if (n == 0) return 0;
+        size_t k = 0;
+        if (pending_)
+        {
+            *static_cast<uint8_t*>(buf) = first_;
+            pending_ = false;
+            k = 1;
+        }
+        return k + s_.Read(static_cast<uint8_t*>(buf) + k, n - k);
+    }
+    size_t Write(const void*, size_t) override { return 0; }
+    uint64_t Seek(int64_t, mrpt::io::CStream::TSeekOrigin) override
+    {
+        throw std::logic_error("CPushbackStream: no seek");
+    }
+    uint64_t getTotalBytesCount() const override { return s_.getTotalBytesCount(); }
+    uint64_t getPosition() const override { return s_.getPosition() - (pending_ ? 1 : 0); }
+    std::string getStreamDescription() const override { return s_.getStreamDescription(); }
+
+private:
+    mrpt::io::CStream& s_;
+    uint8_t first_;
+    bool pending_ = true;
+};
+}  // namespace
+
 CRawlogWriter::CRawlogWriter(const std::string& path,
                              const rfir::obs::CObservationLogHeader& hdr,
                              const CActionRobotMovement2D::TMotionModelOptions& motion)
@@ -106,11 +143,13 @@ CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
 
 mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject()
 {
-    if (in_.checkEOF()) return {};
+    uint8_t first = 0;
+    if (in_.Read(&first, 1) != 1) return {};  // the end, between two objects
     entry_++;
     try
     {
-        auto ar = mrpt::serialization::archiveFrom(in_);
+        CPushbackStream s(in_, first);
+        auto ar = mrpt::serialization::archiveFrom(s);
         return ar.ReadObject();
     }
     catch (const std::exception& e)

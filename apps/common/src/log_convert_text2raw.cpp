@@ -1,0 +1,146 @@
+/* rfir: text log -> rawlog. Two passes over the text: the first checks every
+ * line (and collects the range-bearing landmark names the header needs), the
+ * second writes; a malformed log therefore leaves no output at all. */
+#include <rfir/common/log_convert.h>
+#include <rfir/common/rawlog_io.h>
+
+#include <fstream>
+#include <ostream>
+#include <unordered_map>
+
+namespace rfir::common
+{
+namespace
+{
+/** Progress to a stream in 10 % steps, only for inputs over 1 MB. */
+class CProgress
+{
+public:
+    CProgress(std::ostream* o, std::string what, uint64_t total)
+        : o_(total > (1u << 20) ? o : nullptr), what_(std::move(what)), total_(total)
+    {
+    }
+    void update(uint64_t done)
+    {
+        if (!o_) return;
+        const unsigned pct = unsigned(std::min<uint64_t>(100, done * 100 / total_));
+        if (pct < next_) return;
+        *o_ << what_ << ": " << pct << " %" << std::endl;
+        next_ = pct / 10 * 10 + 10;
+    }
+
+private:
+    std::ostream* o_;
+    std::string what_;
+    uint64_t total_;
+    unsigned next_ = 10;
+};
+
+/** Reads the text log line by line through a fresh parser. */
+template <class OnRecord>
+void forEachRecord(const std::string& path, const TConvertOptions& opts,
+                   const std::string& what, CTextLogParser& p, OnRecord&& onRecord)
+{
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw std::runtime_error(path + ": cannot open text log");
+    f.seekg(0, std::ios::end);
+    const auto size = uint64_t(f.tellg());
+    f.seekg(0);
+    CProgress prog(opts.progress, what + " " + path, size);
+    std::string line;
+    size_t n = 0;
+    TTimedRecord rec;
+    while (std::getline(f, line))
+    {
+        if (p.parseLine(line, ++n, rec)) onRecord(rec);
+        if ((n & 8191) == 0) prog.update(uint64_t(f.tellg()));
+    }
+    if (f.bad()) throw std::runtime_error(path + ": read error");
+    p.finish(n);
+    prog.update(size);
+}
+
+/** What the first pass learns. */
+struct TChecked
+{
+    TTextLogHeader header;
+    std::vector<std::string> landmarks;  //!< rb IDs, in order of first use
+    size_t records = 0, instants = 0;
+    double firstT = 0;
+};
+
+/** Rules of the rawlog on top of the text format's own. */
+TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
+{
+    CTextLogParser p(path);
+    TChecked c;
+    std::unordered_map<std::string, size_t> seen;
+    std::optional<double> prevT;
+    mrpt::Clock::time_point prevTs;
+    size_t prevLine = 0;
+    forEachRecord(path, opts, "checking", p, [&](const TTimedRecord& r) {
+        const auto fail = [&](const std::string& m) { throw TextLogError(path, r.line, m); };
+        const auto ts = timestampFromT(r.t);
+        if (!ts)
+            fail("t " + formatNumber(r.t) +
+                 " cannot be an MRPT timestamp (t must be in [0, 1e11) seconds)");
+        if (!prevT || r.t != *prevT)
+        {
+            if (prevT && *ts == prevTs)
+                fail("t " + formatNumber(r.t) + " and the previous instant's t " +
+                     formatNumber(*prevT) + " (line " + std::to_string(prevLine) +
+                     ") differ by less than the 100 ns resolution of MRPT timestamps");
+            if (!c.instants++) c.firstT = r.t;
+            prevT = r.t;
+            prevTs = *ts;
+            prevLine = r.line;
+        }
+        if (r.kind == TTimedRecord::Kind::IrRaw && r.samples.size() < 16)
+            fail("ir_raw window of " + std::to_string(r.samples.size()) +
+                 " samples is too short to decode (at least 16)");
+        if (r.kind == TTimedRecord::Kind::Rb && seen.emplace(r.id, seen.size()).second)
+            c.landmarks.push_back(r.id);
+        c.records++;
+    });
+    c.header = p.header();
+    return c;
+}
+}  // namespace
+
+TConvertReport convertTextLogToRawlog(const std::string& in, const std::string& out,
+                                      const TConvertOptions& opts)
+{
+    const TChecked c = checkForRawlog(in, opts);
+    const auto hdr = toLogHeader(c.header, c.landmarks, c.firstT);
+    const CInstantBuilder builder(hdr, opts.decoder);
+    CRawlogWriter w(out, hdr);
+    std::vector<TTimedRecord> instant;
+    std::optional<mrpt::poses::CPose2D> odom;
+    std::vector<mrpt::obs::CObservation::Ptr> obs;
+    const auto flush = [&]() {
+        if (instant.empty()) return;
+        try
+        {
+            builder.build(instant, odom, obs);
+        }
+        catch (const std::exception& e)
+        {
+            throw TextLogError(in, instant.front().line, e.what());
+        }
+        w.writeStep(instant.front().t, odom, obs);
+        instant.clear();
+    };
+    CTextLogParser p(in);
+    forEachRecord(in, opts, "converting", p, [&](const TTimedRecord& r) {
+        if (!instant.empty() && r.t != instant.front().t) flush();
+        instant.push_back(r);
+    });
+    flush();
+    w.close();
+    TConvertReport rep;
+    rep.timedRecords = c.records;
+    rep.instants = w.stepsWritten();
+    return rep;
+}
+
+}  // namespace rfir::common

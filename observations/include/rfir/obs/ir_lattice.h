@@ -34,13 +34,17 @@ struct TLatticeParams
      * never equal a repeated ID) in lexicographic order, then of one more code
      * when those run out. */
     int uniqueCodesPerId = 2;
-    /** Disable one type (e.g. the thesis' comparison with unique IDs only). */
+    /** Leave out one type of emitter. */
     bool withRepeated = true, withUnique = true;
+    /** Give the repeated-ID positions unique IDs too (the thesis' comparison
+     * layout with unique-ID emitters only, section 5.4.1). */
+    bool allUnique = false;
 };
 
 /** Repeated-ID emitters at (minX + i p, minY + j p) for every such point inside
  * the room (borders included), then unique-ID emitters at the centres of the
- * grid cells, in row-major order (j, then i). Throws std::invalid_argument on
+ * grid cells, each group in row-major order (j, then i); unique IDs are handed
+ * out in that order. Throws std::invalid_argument on
  * a bad room or parameters, or if the room needs more unique IDs than the
  * 9 codes give. */
 std::vector<TEmitter> makeEmitterLattice(const TRoom& room, const TLatticeParams& p = {});

@@ -121,6 +121,8 @@ struct TIRConfig
     double referenceHeight = 1.2;  //!< vertical distance eq. 5.3 was fitted at
     std::vector<uint8_t> repeatedCodes{1, 2, 3, 4};
     int uniqueCodesPerId = 2;
+    bool withRepeated = true, withUnique = true;
+    bool allUnique = false;        //!< unique IDs at every position (thesis 5.4.1)
     double visibleRadius = 0.28;   //!< horizontal radius an emitter is seen in
     double voltSigma = 0.03;       //!< V noise on the decoded voltage
     Output output = Output::Decoded;
@@ -178,9 +180,11 @@ struct TSimConfig : public mrpt::config::CLoadableOptions
     void validate() const;
 };
 
-/** Loads an INI (every section of the file must be one of ours). Throws
+/** Loads an INI (every section of the file must be one of ours), then applies
+ * `overrides` ("section.key=value", as rfir-sim --set). Throws
  * std::runtime_error("FILE: [section] key: what is wrong"). */
-TSimConfig loadSimConfig(const std::string& iniPath);
+TSimConfig loadSimConfig(const std::string& iniPath,
+                         const std::vector<std::string>& overrides = {});
 
 /** The default reader layout: 8 readers on a ring of radius `ringRadius`
  * at 22.5 + k * 45 deg, squares of half side `halfSize`. */
@@ -202,6 +206,8 @@ struct TSimOutput
     rfir::common::TPath2D groundTruth;  //!< true pose at every step
     rfir::common::TMapFile gtMap;       //!< tags, emitters, landmarks
     rfir::common::TPath2D spots;        //!< true pose at each stop (IR spots)
+    /** Emitters installed but not emitting, "ID x y" (they are in gtMap). */
+    std::vector<std::string> failedEmitters;
     /** Per-run odometry biases drawn from the noise model (s, r, h). */
     double scaleBias = 0, rotScaleBias = 0, headingDrift = 0;
 };

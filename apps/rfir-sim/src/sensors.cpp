@@ -1,0 +1,134 @@
+/* rfir-sim: sensor models. */
+#include <cstddef>  // ir_decoder.h uses size_t
+#include <rfir/obs/ir_decoder.h>
+
+#include "world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rfir::sim::detail
+{
+rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
+                                                  const mrpt::poses::CPose2D& robot,
+                                                  mrpt::random::CRandomGenerator& rng)
+{
+    auto o = rfir::obs::CObservationRFIDReaders::Create();
+    o->sensorLabel = "RFID";
+    double reach = 0;
+    for (const auto& r : cfg.readers)
+        reach = std::max(reach, std::hypot(r.x, r.y) + std::hypot(r.halfX, r.halfY));
+    std::vector<size_t> near;
+    w.tagsNear(robot.x(), robot.y(), reach, near);
+    std::sort(near.begin(), near.end());
+    const double c = std::cos(robot.phi()), s = std::sin(robot.phi());
+    for (const auto& r : cfg.readers)
+    {
+        rfir::obs::CObservationRFIDReaders::TReading rd;
+        rd.reader = r;
+        for (size_t k : near)
+        {
+            // Tag in the robot frame, minus the reader centre (SPEC 2: e).
+            const double dx = w.tags[k].x - robot.x(), dy = w.tags[k].y - robot.y();
+            const double ex = c * dx + s * dy - r.x, ey = -s * dx + c * dy - r.y;
+            if (std::abs(ex) >= r.halfX || std::abs(ey) >= r.halfY) continue;
+            // Draw only when misses are on, so that p = 0 leaves the stream alone.
+            if (cfg.rfid.missProbability > 0 &&
+                rng.drawUniform(0.0, 1.0) < cfg.rfid.missProbability)
+                continue;
+            rd.tags.push_back(w.tags[k].id);
+        }
+        o->readings.push_back(rd);
+    }
+    return o;
+}
+
+double modelVoltage(const TIRConfig& ir, double d, double h)
+{
+    const double k = ir.referenceHeight / h;
+    return rfir::ir::expectedVoltage(d) * k * k;
+}
+
+rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
+                                              const mrpt::poses::CPose2D& robot,
+                                              mrpt::random::CRandomGenerator& rng)
+{
+    const auto& ir = cfg.ir;
+    auto o = rfir::obs::CObservationIRSignals::Create();
+    o->sensorLabel = "IR";
+    for (const auto& rx : cfg.receivers)
+    {
+        rfir::obs::CObservationIRSignals::TReading rd;
+        rd.receiver = rx;
+        const auto p = robot + mrpt::poses::CPose2D(rx.x, rx.y, 0);
+        // The nearest working emitter within the visible radius (the lattice
+        // keeps two emitters from being in view at once with the seed's values).
+        int best = -1;
+        double bestD = ir.visibleRadius;
+        for (size_t i = 0; i < w.emitters.size(); i++)
+        {
+            if (w.emitterFailed[i]) continue;
+            const double d = std::hypot(w.emitters[i].x - p.x(), w.emitters[i].y - p.y());
+            if (d <= bestD) best = int(i), bestD = d;
+        }
+        if (best >= 0)
+        {
+            const auto& e = w.emitters[best];
+            rd.codes = e.codes;
+            rd.volts = modelVoltage(ir, bestD, e.z - rx.z) + rng.drawGaussian1D(0, ir.voltSigma);
+        }
+        if (ir.output == TIRConfig::Output::Raw)
+        {
+            std::vector<double> phases(rd.codes.size());
+            for (auto& ph : phases) ph = rng.drawUniform(0.0, 1.0);
+            rd.raw = rfir::ir::synthesizeIRWindow(rd.codes, rd.volts, ir.rawOffset, ir.rateHz,
+                                                  size_t(ir.samples), phases);
+            for (auto& v : rd.raw) v += float(rng.drawGaussian1D(0, ir.rawNoiseSigma));
+            rd.rateHz = ir.rateHz;
+            // The rawlog keeps what a receiver gives: the window. Codes and volts
+            // are left for the decoder (textlog `ir_raw`).
+            rd.codes.clear();
+            rd.volts = 0;
+        }
+        o->readings.push_back(rd);
+    }
+    return o;
+}
+
+mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
+                                                 const mrpt::poses::CPose2D& robot,
+                                                 mrpt::random::CRandomGenerator& rng)
+{
+    const auto& sp = cfg.rbSensor;
+    auto o = mrpt::obs::CObservationBearingRange::Create();
+    o->sensorLabel = "RB";
+    o->sensorLocationOnRobot = mrpt::poses::CPose3D(sp.x, sp.y, 0, sp.yaw, 0, 0);
+    o->minSensorDistance = 0;
+    o->maxSensorDistance = float(sp.maxRange);
+    o->fieldOfView_yaw = float(sp.fov);
+    o->fieldOfView_pitch = 0;
+    o->validCovariances = false;
+    o->sensor_std_range = float(cfg.rb.sigmaRange);
+    o->sensor_std_yaw = float(cfg.rb.sigmaBearing);
+    o->sensor_std_pitch = 0;
+    const auto sensor = robot + mrpt::poses::CPose2D(sp.x, sp.y, sp.yaw);
+    for (size_t i = 0; i < w.landmarks.size(); i++)
+    {
+        const double dx = w.landmarks[i].x - sensor.x(), dy = w.landmarks[i].y - sensor.y();
+        const double r = std::hypot(dx, dy);
+        const double b = std::atan2(std::sin(std::atan2(dy, dx) - sensor.phi()),
+                                    std::cos(std::atan2(dy, dx) - sensor.phi()));
+        if (r > sp.maxRange || std::abs(b) > 0.5 * sp.fov) continue;
+        mrpt::obs::CObservationBearingRange::TMeasurement m;
+        m.range = float(r + rng.drawGaussian1D(0, cfg.rb.sigmaRange));
+        const double mb = b + rng.drawGaussian1D(0, cfg.rb.sigmaBearing);
+        m.yaw = float(std::atan2(std::sin(mb), std::cos(mb)));
+        m.pitch = 0;
+        m.landmarkID = int32_t(i);
+        m.covariance.setZero();
+        o->sensedData.push_back(m);
+    }
+    return o;
+}
+
+}  // namespace rfir::sim::detail

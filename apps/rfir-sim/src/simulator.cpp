@@ -1,0 +1,189 @@
+/* rfir-sim: the time loop: true path (with kidnapping), odometry, sensors. */
+#include <rfir/common/rawlog_io.h>
+#include <rfir/sim/simulator.h>
+
+#include "odometry.h"
+#include "trajectory.h"
+#include "world.h"
+
+#include <cmath>
+#include <algorithm>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace rfir::sim
+{
+using namespace detail;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** Maps real time to the plan, with the kidnapping: before `ts` the plan is
+ * followed; during the carry the robot moves from plan(ts) to the target; after
+ * `te` it follows K (+) plan(t - te + s0). wheels(t) is the pose its wheels
+ * would have integrated (they stop while carried). */
+class CTimeline
+{
+public:
+    CTimeline(const TSimConfig& cfg, const CPlan& plan) : plan_(plan)
+    {
+        const auto& k = cfg.kidnap;
+        end_ = plan.duration();
+        if (!k.enabled) return;
+        if (k.time >= plan.duration())
+            throw std::invalid_argument("[kidnap] time is after the end of the trajectory (" +
+                                        std::to_string(plan.duration()) + " s)");
+        on_ = true;
+        ts_ = k.time, te_ = k.time + k.carryTime;
+        s0_ = k.toTime >= 0 ? k.toTime : k.time;
+        const CPose2D target = k.toTime >= 0 ? plan.at(s0_) : CPose2D(k.toX, k.toY, k.toPhi);
+        K_ = target + (CPose2D() - plan.at(s0_));
+        lift_ = plan.at(ts_);
+        end_ = te_ + plan.duration() - s0_;
+    }
+    double end() const { return end_; }
+    bool carried(double t) const { return on_ && t >= ts_ && t < te_; }
+    CPose2D truePose(double t) const
+    {
+        if (!on_ || t < ts_) return plan_.at(t);
+        if (t >= te_) return K_ + plan_.at(t - te_ + s0_);
+        const CPose2D to = K_ + plan_.at(s0_);
+        const double f = te_ > ts_ ? (t - ts_) / (te_ - ts_) : 1.0;
+        const double dphi = std::atan2(std::sin(to.phi() - lift_.phi()),
+                                       std::cos(to.phi() - lift_.phi()));
+        return {lift_.x() + f * (to.x() - lift_.x()), lift_.y() + f * (to.y() - lift_.y()),
+                lift_.phi() + f * dphi};
+    }
+    CPose2D wheels(double t) const
+    {
+        if (!on_ || t < ts_) return plan_.at(t);
+        if (t < te_) return lift_;
+        return lift_ + (CPose2D() - plan_.at(s0_)) + plan_.at(t - te_ + s0_);
+    }
+    /** Real times at which the robot stands at plan time `s`. */
+    std::vector<double> realTimes(double s) const
+    {
+        std::vector<double> v;
+        if (!on_ || s < ts_) v.push_back(s);
+        if (on_ && s >= s0_) v.push_back(s - s0_ + te_);
+        return v;
+    }
+
+private:
+    const CPlan& plan_;
+    bool on_ = false;
+    double ts_ = 0, te_ = 0, s0_ = 0, end_ = 0;
+    CPose2D K_, lift_;
+};
+
+rfir::common::TMapFile groundTruthMap(const TWorld& w)
+{
+    using K = rfir::common::TMapEntry::Kind;
+    rfir::common::TMapFile m;
+    for (const auto& t : w.tags) m.push_back({K::Tag, t.id, t.x, t.y, 0, {}, {}});
+    for (const auto& e : w.emitters) m.push_back({K::Emitter, e.id, e.x, e.y, e.z, {}, {}});
+    for (const auto& l : w.landmarks) m.push_back({K::Landmark, l.id, l.x, l.y, 0, {}, {}});
+    return m;
+}
+}  // namespace
+
+TSimOutput simulate(const TSimConfig& cfg, uint64_t seed)
+{
+    cfg.validate();
+    mrpt::random::CRandomGenerator rngPath(streamSeed(seed, 4)), rngOdo(streamSeed(seed, 5)),
+        rngRFID(streamSeed(seed, 6)), rngIR(streamSeed(seed, 7)), rngRB(streamSeed(seed, 8));
+    const CPlan plan(cfg, rngPath);
+    const CTimeline tl(cfg, plan);
+    const TWorld world = buildWorld(cfg, seed);
+    COdometrySimulator odo(cfg.odometry, rngOdo);
+
+    TSimOutput out;
+    out.scaleBias = odo.scaleBias(), out.rotScaleBias = odo.rotScaleBias();
+    out.headingDrift = odo.headingDrift();
+    out.gtMap = groundTruthMap(world);
+    for (size_t i = 0; i < world.emitters.size(); i++)
+        if (world.emitterFailed[i])
+        {
+            const auto& e = world.emitters[i];
+            std::ostringstream os;
+            os << e.id << " " << e.x << " " << e.y;
+            out.failedEmitters.push_back(os.str());
+        }
+    auto& h = out.header;
+    h.sensorLabel = "HEADER";
+    if (cfg.rfid.enabled) h.readers = cfg.readers;
+    if (cfg.ir.enabled) h.receivers = cfg.receivers;
+    if (cfg.rb.enabled)
+    {
+        h.rbSensor = cfg.rbSensor;
+        for (const auto& l : world.landmarks) h.rbLandmarkNames.push_back(l.id);
+    }
+    h.startPose = tl.truePose(0);
+
+    double end = tl.end();
+    if (cfg.maxDuration > 0) end = std::min(end, cfg.maxDuration);
+    const size_t n = size_t(std::floor(end / cfg.dt + 1e-9)) + 1;
+    out.steps.reserve(n);
+    CPose2D odom = tl.truePose(0), prevWheels = tl.wheels(0);
+    long lastIR = -1;
+    for (size_t k = 0; k < n; k++)
+    {
+        TSimStep s;
+        s.t = k * cfg.dt;
+        s.truePose = tl.truePose(s.t);
+        const CPose2D wheels = tl.wheels(s.t);
+        if (k > 0) odom = odom + odo.noisyIncrement(wheels - prevWheels);
+        prevWheels = wheels;
+        const bool carried = tl.carried(s.t);
+        if (!carried || cfg.kidnap.odometry == TKidnapConfig::Odometry::Frozen)
+            s.odometry = odom;
+        if (!carried)
+        {
+            if (cfg.rfid.enabled) s.obs.push_back(senseRFID(cfg, world, s.truePose, rngRFID));
+            const long irSlot = long(std::floor(s.t / cfg.ir.period + 1e-9));
+            if (cfg.ir.enabled && irSlot != lastIR)
+            {
+                s.obs.push_back(senseIR(cfg, world, s.truePose, rngIR));
+                lastIR = irSlot;
+            }
+            if (cfg.rb.enabled) s.obs.push_back(senseRB(cfg, world, s.truePose, rngRB));
+        }
+        out.groundTruth.push_back({s.t, s.truePose});
+        out.steps.push_back(std::move(s));
+    }
+    for (double sp : plan.spotTimes())
+        for (double t : tl.realTimes(sp))
+            if (t <= end) out.spots.push_back({t, tl.truePose(t)});
+    std::sort(out.spots.begin(), out.spots.end(),
+              [](const auto& a, const auto& b) { return a.t < b.t; });
+    return out;
+}
+
+void writeOutputs(const TSimOutput& out, const std::string& dir, const std::string& name)
+{
+    const std::string base = dir + "/" + name;
+    {
+        rfir::common::CRawlogWriter w(base + ".rawlog", out.header);
+        const size_t n = out.steps.size();
+        for (size_t k = 0; k < n; k++)
+        {
+            const auto& s = out.steps[k];
+            w.writeStep(s.t, s.odometry, s.obs);
+            if (n >= 1000 && (k + 1) % (n / 10) == 0)
+                std::cerr << "rfir-sim: wrote " << (k + 1) << "/" << n << " steps\n";
+        }
+        w.close();
+    }
+    rfir::common::saveTUM(base + ".gt.tum", out.groundTruth);
+    std::string comment = "ground truth of simulated run " + name;
+    if (!out.failedEmitters.empty())
+    {
+        comment += "; failed emitters (installed, not emitting):";
+        for (const auto& f : out.failedEmitters) comment += " [" + f + "]";
+    }
+    rfir::common::saveMapFile(base + ".gt_map.txt", out.gtMap, comment);
+    if (!out.spots.empty()) rfir::common::saveTUM(base + ".spots.tum", out.spots);
+}
+
+}  // namespace rfir::sim

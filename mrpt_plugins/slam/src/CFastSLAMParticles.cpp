@@ -23,11 +23,11 @@ void TFastSLAMOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 void TFastSLAMOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                         const std::string& s) const
 {
-    c.write(s, "rfid_std_factor", meas.rfidStdFactor, 16, 16,
+    c.write(s, "rfid_std_factor", meas.rfidStdFactor, -1, -1,
             "RFID: tag std about the reader centre / half side");
-    c.write(s, "rb_std_range", meas.rbStdRange, 16, 16,
+    c.write(s, "rb_std_range", meas.rbStdRange, -1, -1,
             "range std [m] when the observation gives none");
-    c.write(s, "rb_std_bearing", meas.rbStdBearing, 16, 16,
+    c.write(s, "rb_std_bearing", meas.rbStdBearing, -1, -1,
             "bearing std [rad] when the observation gives none");
 }
 

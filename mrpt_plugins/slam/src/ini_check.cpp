@@ -1,6 +1,7 @@
 #include <rfir/slam/ini_check.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/system/string_utils.h>
 
 #include <stdexcept>
 #include <vector>
@@ -14,7 +15,9 @@ std::set<std::string> knownKeysOf(const mrpt::config::CLoadableOptions& opts,
     opts.saveToConfigFile(mem, section);
     std::vector<std::string> keys;
     mem.getAllKeys(section, keys);
-    return {keys.begin(), keys.end()};
+    std::set<std::string> out;
+    for (const auto& k : keys) out.insert(mrpt::system::trim(k));
+    return out;
 }
 
 void rejectUnknownKeys(const mrpt::config::CConfigFileBase& cfg,
@@ -24,7 +27,7 @@ void rejectUnknownKeys(const mrpt::config::CConfigFileBase& cfg,
     cfg.getAllKeys(section, keys);
     for (const auto& k : keys)
     {
-        if (known.count(k)) continue;
+        if (known.count(mrpt::system::trim(k))) continue;
         std::string list;
         for (const auto& s : known) list += (list.empty() ? "" : ", ") + s;
         throw std::invalid_argument("unknown key '" + k + "' in section [" + section +

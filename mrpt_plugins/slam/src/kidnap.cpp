@@ -28,16 +28,16 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                       const std::string& s) const
 {
-    c.write(s, "enabled", enabled, 16, 16, "sensor resetting on collapse");
-    c.write(s, "collapse_loglik", collapse_loglik, 16, 16,
+    c.write(s, "enabled", enabled, -1, -1, "sensor resetting on collapse");
+    c.write(s, "collapse_loglik", collapse_loglik, -1, -1,
             "lost if best mean log-lik per known detection is below this...");
-    c.write(s, "collapse_steps", int(collapse_steps), 16, 16,
+    c.write(s, "collapse_steps", int(collapse_steps), -1, -1,
             "...for this many steps in a row");
-    c.write(s, "inject_fraction", inject_fraction, 16, 16,
+    c.write(s, "inject_fraction", inject_fraction, -1, -1,
             "share of robot particles redrawn from detections");
-    c.write(s, "keep_heading_share", keep_heading_share, 16, 16,
+    c.write(s, "keep_heading_share", keep_heading_share, -1, -1,
             "share of those keeping the current heading");
-    c.write(s, "heading_std", heading_std, 16, 16, "their heading std [rad]");
+    c.write(s, "heading_std", heading_std, -1, -1, "their heading std [rad]");
 }
 
 bool CKidnapMonitor::update(std::optional<double> bestMeanLogLik)

@@ -20,12 +20,12 @@ void TMotionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 void TMotionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                       const std::string& s) const
 {
-    c.write(s, "a1", a1, 16, 16, "xy std [m] per metre travelled");
-    c.write(s, "a2", a2, 16, 16, "xy std [m] per radian turned");
-    c.write(s, "a3", a3, 16, 16, "heading std [rad] per metre travelled");
-    c.write(s, "a4", a4, 16, 16, "heading std [rad] per radian turned");
-    c.write(s, "min_std_xy", min_std_xy, 16, 16, "xy std floor per step [m]");
-    c.write(s, "min_std_phi", min_std_phi, 16, 16, "heading std floor per step [rad]");
+    c.write(s, "a1", a1, -1, -1, "xy std [m] per metre travelled");
+    c.write(s, "a2", a2, -1, -1, "xy std [m] per radian turned");
+    c.write(s, "a3", a3, -1, -1, "heading std [rad] per metre travelled");
+    c.write(s, "a4", a4, -1, -1, "heading std [rad] per radian turned");
+    c.write(s, "min_std_xy", min_std_xy, -1, -1, "xy std floor per step [m]");
+    c.write(s, "min_std_phi", min_std_phi, -1, -1, "heading std floor per step [rad]");
 }
 
 void TMotionOptions::validate(const std::string& s) const

@@ -82,15 +82,15 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                     const std::string& s) const
 {
-    c.write(s, "method", method, 16, 16, "pf | ps | fastslam | odometry");
-    c.write(s, "robot_particles", int(robot_particles), 16, 16, "robot particles M");
-    c.write(s, "resampling", resampling, 16, 16,
+    c.write(s, "method", method, -1, -1, "pf | ps | fastslam | odometry");
+    c.write(s, "robot_particles", int(robot_particles), -1, -1, "robot particles M");
+    c.write(s, "resampling", resampling, -1, -1,
             "multinomial | residual | stratified | systematic");
-    c.write(s, "resample_ess", resample_ess, 16, 16,
+    c.write(s, "resample_ess", resample_ess, -1, -1,
             "resample when normalised ESS < this (1: every step)");
-    c.write(s, "start_std_xy", start_std_xy, 16, 16, "initial spread [m]");
-    c.write(s, "start_std_phi", start_std_phi, 16, 16, "initial spread [rad]");
-    c.write(s, "tag_update_pose", tag_update_pose, 16, 16,
+    c.write(s, "start_std_xy", start_std_xy, -1, -1, "initial spread [m]");
+    c.write(s, "start_std_phi", start_std_phi, -1, -1, "initial spread [rad]");
+    c.write(s, "tag_update_pose", tag_update_pose, -1, -1,
             "pf/ps weigh-first: tags updated at the posterior or predicted mean");
 }
 

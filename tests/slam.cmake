@@ -1,0 +1,9 @@
+# rfir_slam: unit tests, and accuracy tests on short simulated runs.
+rfir_add_test(test_slam_units
+  SOURCES test_slam_units.cpp
+  LIBS rfir_slam)
+if(TARGET rfir_sim)
+  rfir_add_test(test_slam_accuracy
+    SOURCES test_slam_accuracy.cpp
+    LIBS rfir_slam rfir_sim rfir_eval)
+endif()

@@ -1,0 +1,138 @@
+// Helpers of the SLAM accuracy tests: simulated runs through the sim API, the
+// methods run with their stock INIs, errors from rfir_eval.
+#pragma once
+
+#include <rfir/eval/metrics.h>
+#include <rfir/sim/simulator.h>
+#include <rfir/slam/slam_engine.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace slam_test
+{
+/** The sim's steps as SLAM inputs: odometry increments between consecutive
+ * absolute odometry poses, RFID and range-bearing observations. */
+inline std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out)
+{
+    std::vector<rfir::slam::TSlamInput> v;
+    std::optional<mrpt::poses::CPose2D> last;
+    for (const auto& s : out.steps)
+    {
+        rfir::slam::TSlamInput in;
+        in.t = s.t;
+        if (s.odometry)
+        {
+            if (last) in.odometryIncrement = *s.odometry - *last;
+            last = s.odometry;
+        }
+        for (const auto& o : s.obs)
+        {
+            if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
+                in.rfid = r;
+            if (auto b = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
+                in.rb = b;
+        }
+        v.push_back(in);
+    }
+    return v;
+}
+
+/** The stock INI of `method`, with optional "section.key = value" edits. */
+inline rfir::slam::TSlamConfig stockConfig(
+    const std::string& method,
+    const std::vector<std::pair<std::string, std::string>>& edits = {})
+{
+    const std::string file = method == "fastslam" ? "fastslam" : method == "ps" ? "ps" : "pf";
+    mrpt::config::CConfigFile f(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" +
+                                file + ".ini");
+    for (const auto& [sk, v] : edits)
+    {
+        const auto dot = sk.find('.');
+        f.write(sk.substr(0, dot), sk.substr(dot + 1), v);
+    }
+    return rfir::slam::loadSlamConfig(f, method);
+}
+
+struct TResult
+{
+    double robot = 0, tags = 0;  //!< mean distance errors, m
+    size_t mapped = 0;
+    rfir::slam::TSlamRun run;
+    rfir::eval::TRobotErrors robotErrors;
+};
+
+inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConfig cfg,
+                         uint64_t seed)
+{
+    cfg.seed = seed;
+    mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
+    auto engine = rfir::slam::makeEngine(cfg, sim.header);
+    TResult r;
+    r.run = rfir::slam::runEngine(*engine, sim.groundTruth.front().pose, toInputs(sim));
+    rfir::common::TPath2D est;
+    for (const auto& [t, p] : r.run.path) est.push_back({t, p});
+    r.robotErrors = rfir::eval::computeRobotErrors(est, sim.groundTruth);
+    r.robot = r.robotErrors.stats.mean_dist;
+    rfir::common::TMapFile m;
+    for (const auto& l : r.run.map)
+    {
+        rfir::common::TMapEntry e;
+        e.kind = l.isTag ? rfir::common::TMapEntry::Kind::Tag
+                         : rfir::common::TMapEntry::Kind::Landmark;
+        e.id = l.id;
+        e.x = l.x;
+        e.y = l.y;
+        m.push_back(e);
+    }
+    const auto kind = sim.header.rbSensor && !sim.header.readers.size()
+                          ? rfir::common::TMapEntry::Kind::Landmark
+                          : rfir::common::TMapEntry::Kind::Tag;
+    const auto me = rfir::eval::computeMapErrors(m, sim.gtMap, kind);
+    r.tags = me.stats.mean_dist;
+    r.mapped = me.mapped;
+    return r;
+}
+
+/** The thesis 4.1 / 4.2 setup: 8 readers of 300 mm, 4 tags/m^2. */
+inline rfir::sim::TSimConfig setup300mm(double duration)
+{
+    rfir::sim::TSimConfig c;
+    c.readers = rfir::sim::ringReaderLayout(0.4, 0.15);
+    c.rfid.density = 4;
+    c.trajectory.kind = rfir::sim::TTrajectoryConfig::Kind::Random;
+    c.trajectory.waypoints = 30;
+    c.maxDuration = duration;
+    return c;
+}
+
+/** The thesis 3.1 setup: 8 readers of 60 mm, 16 tags/m^2, rectangle loop. */
+inline rfir::sim::TSimConfig setup60mmLoop(int laps)
+{
+    rfir::sim::TSimConfig c;  // the simulator's defaults are this setup
+    c.readers = rfir::sim::ringReaderLayout(0.15, 0.03);
+    c.rfid.density = 16;
+    c.trajectory.kind = rfir::sim::TTrajectoryConfig::Kind::Loop;
+    c.trajectory.laps = laps;
+    return c;
+}
+
+inline double mean(const std::vector<double>& v)
+{
+    double s = 0;
+    for (double x : v) s += x;
+    return v.empty() ? 0 : s / double(v.size());
+}
+inline double stddev(const std::vector<double>& v)
+{
+    const double m = mean(v);
+    double s = 0;
+    for (double x : v) s += (x - m) * (x - m);
+    return v.size() < 2 ? 0 : std::sqrt(s / double(v.size() - 1));
+}
+
+}  // namespace slam_test

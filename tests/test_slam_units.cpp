@@ -1,0 +1,203 @@
+/* rfir_slam: parts checked alone (copy-on-write trie, EKF by hand, FastSLAM
+ * copy counting, INI rejection, sensor resetting geometry). */
+#include <rfir/slam/CFastSLAMParticles.h>
+#include <rfir/slam/kidnap.h>
+#include <rfir/slam/persistent_vector.h>
+#include <rfir/slam/slam_config.h>
+#include <rfir/slam/slam_engine.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <fstream>
+#include <sstream>
+
+using namespace rfir::slam;
+
+TEST(SlamPersistentVector, CopiesAreIndependent)
+{
+    CPersistentVector<int> a;
+    for (int i = 0; i < 300; i++) a.set(size_t(i), std::make_shared<const int>(i));
+    CPersistentVector<int> b = a;  // one pointer copy
+    b.set(7, std::make_shared<const int>(-7));
+    b.set(1000, std::make_shared<const int>(1000));
+    EXPECT_EQ(*a.get(7), 7);
+    EXPECT_EQ(*b.get(7), -7);
+    EXPECT_EQ(a.get(1000), nullptr);
+    EXPECT_EQ(*b.get(1000), 1000);
+    EXPECT_EQ(b.get(299), a.get(299));  // untouched elements are shared
+    EXPECT_EQ(a.get(5000), nullptr);
+}
+
+TEST(SlamEKF, RfidUpdateByHand)
+{
+    // A tag at (1, 0) with variance 0.01 in x and y, measured at the reader
+    // centre (0.5, 0) of a robot at (0.45, 0, 0) with R = 0.01 I: the gain is
+    // 1/2 and the mean moves halfway to 0.95.
+    TGaussianMeasurementParams p;
+    p.rfidStdFactor = 1.0;
+    CGaussianLandmarkModel model(p);
+    TDetection d;
+    d.a = 0.5;
+    d.halfX = d.halfY = 0.1;
+    TLandmarkEKF lm;
+    lm.mean = {1.0, 0.0};
+    lm.cov = 0.01 * Eigen::Matrix2d::Identity();
+    const mrpt::poses::CPose2D robot(0.45, 0, 0);
+    const double ll = ekfUpdate(lm, model.linearize(d, robot, lm.mean));
+    EXPECT_NEAR(lm.mean.x(), 0.975, 1e-12);
+    EXPECT_NEAR(lm.cov(0, 0), 0.005, 1e-12);
+    // log N(0.05; 0, 0.02) * N(0; 0, 0.02)
+    const double expect = -0.5 * (0.0025 / 0.02) - 0.5 * std::log(0.02 * 0.02) -
+                          std::log(2 * M_PI);
+    EXPECT_NEAR(ll, expect, 1e-12);
+}
+
+TEST(SlamEKF, RangeBearingInverseMatchesPrediction)
+{
+    CGaussianLandmarkModel model({});
+    TDetection d;
+    d.kind = TDetection::Kind::RangeBearing;
+    d.a = 0.4;
+    d.b = 0.3;
+    d.sensor = mrpt::poses::CPose2D(0.1, 0.0, 0.2);
+    const mrpt::poses::CPose2D robot(1, 2, 0.5);
+    const TLandmarkEKF lm = model.initialize(d, robot);
+    const TLinearMeasurement z = model.linearize(d, robot, lm.mean);
+    EXPECT_NEAR(z.innovation.norm(), 0.0, 1e-12);
+}
+
+TEST(SlamFastSLAM, ResamplingSharesLandmarks)
+{
+    mrpt::random::getRandomGenerator().randomize(3);
+    CFastSLAMParticles pf;
+    pf.reset(mrpt::poses::CPose2D(), 200, 0.01, 0.01);
+    std::vector<TDetection> dets;
+    for (int k = 0; k < 50; k++)
+    {
+        TDetection d;
+        d.id = "T" + std::to_string(k);
+        d.a = 0.01 * k;
+        d.halfX = d.halfY = 0.03;
+        dets.push_back(d);
+    }
+    mrpt::bayes::CParticleFilter filter;
+    filter.m_options.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
+    filter.m_options.BETA = 1.01;  // resample on every step
+    mrpt::obs::CActionCollection none;
+    pf.setDetections(&dets);
+    filter.executeOn(pf, &none, nullptr);  // creates 50 EKFs per particle
+    const size_t before = TLandmarkEKF::copyCount();
+    filter.executeOn(pf, &none, nullptr);  // updates all 50 once per particle
+    EXPECT_EQ(TLandmarkEKF::copyCount() - before, 200u * 50u);
+    // Resampling alone copies no EKF.
+    std::vector<size_t> idx(200, 0);
+    const size_t c0 = TLandmarkEKF::copyCount();
+    pf.performSubstitution(idx);
+    EXPECT_EQ(TLandmarkEKF::copyCount(), c0);
+    ASSERT_EQ(pf.landmarkCount(), 50u);
+    const auto lms = pf.landmarks();
+    EXPECT_NEAR(lms[10].mean.x(), 0.1, 0.05);
+}
+
+namespace
+{
+std::string stockIni(const std::string& m)
+{
+    std::ifstream f(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + m + ".ini");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+/** Loading the stock pf INI with `edit` appended to `section` throws a message
+ * containing `expect`. */
+void expectRejected(const std::string& section, const std::string& key,
+                    const std::string& value)
+{
+    mrpt::config::CConfigFileMemory mem(stockIni("pf"));
+    mem.write(section, key, value);
+    try
+    {
+        loadSlamConfig(mem);
+        FAIL() << "accepted: [" << section << "] " << key << " = " << value;
+    }
+    catch (const std::exception& e)
+    {
+        EXPECT_NE(std::string(e.what()).find(key), std::string::npos)
+            << "message: " << e.what();
+        EXPECT_NE(std::string(e.what()).find(section), std::string::npos)
+            << "message: " << e.what();
+    }
+}
+}  // namespace
+
+TEST(SlamConfig, StockInisLoad)
+{
+    for (const char* m : {"pf", "ps", "fastslam"})
+    {
+        mrpt::config::CConfigFileMemory mem(stockIni(m));
+        const TSlamConfig c = loadSlamConfig(mem);
+        EXPECT_EQ(c.slam.method, m);
+        EXPECT_EQ(c.slam.robot_particles, 500u);
+        const std::string dump = dumpSlamConfig(c);
+        // The dump is itself a valid config with the same settings.
+        mrpt::config::CConfigFileMemory again(dump);
+        EXPECT_EQ(dumpSlamConfig(loadSlamConfig(again)), dump);
+    }
+}
+
+TEST(SlamConfig, BadSettingsNameTheKey)
+{
+    expectRejected("slam", "robot_particles", "0");
+    expectRejected("slam", "robot_particles", "-5");
+    expectRejected("slam", "method", "gmapping");
+    expectRejected("slam", "resampling", "roulette");
+    expectRejected("slam", "robot_particle", "100");
+    expectRejected("motion", "a5", "0.1");
+    expectRejected("kidnap", "collapse_step", "2");
+    expectRejected("fastslam", "rfid_std", "1");
+    expectRejected("tagmap", "lag", "0");
+    expectRejected("tagmap", "lag", "-3");
+    expectRejected("tagmap", "num_particles", "0");
+    expectRejected("tagmap_likelihood", "robot_updates", "literal");
+    mrpt::config::CConfigFileMemory mem(stockIni("pf") + "\n[slma]\nmethod = pf\n");
+    EXPECT_THROW(loadSlamConfig(mem), std::invalid_argument);
+    mrpt::config::CConfigFileMemory ok(stockIni("pf"));
+    EXPECT_THROW(loadSlamConfig(ok, std::string("pff")), std::invalid_argument);
+}
+
+TEST(SlamKidnap, ResettingPosesExplainTheDetection)
+{
+    mrpt::random::CRandomGenerator rng(5);
+    TAnchor a;
+    a.det.id = "T";
+    a.det.a = 0.2;
+    a.det.b = -0.1;
+    a.det.halfX = 0.03;
+    a.det.halfY = 0.05;
+    a.x = 3;
+    a.y = 4;
+    for (int i = 0; i < 100; i++)
+    {
+        const double phi = rng.drawUniform(-M_PI, M_PI);
+        const auto p = poseFromAnchor(a, phi, rng);
+        // The tag seen from p lies inside the reader's area.
+        const auto local = mrpt::poses::CPose2D(a.x, a.y, 0) - p;
+        EXPECT_LE(std::abs(local.x() - 0.2), 0.03 + 1e-9);
+        EXPECT_LE(std::abs(local.y() + 0.1), 0.05 + 1e-9);
+        EXPECT_NEAR(p.phi(), phi, 1e-9);
+    }
+    TKidnapOptions o;
+    o.collapse_steps = 2;
+    CKidnapMonitor m(o);
+    EXPECT_FALSE(m.update(-10.0));
+    EXPECT_TRUE(m.suspicious());
+    EXPECT_FALSE(m.update(std::nullopt));  // no known landmark: no evidence
+    EXPECT_TRUE(m.update(-10.0));
+    EXPECT_FALSE(m.update(-0.1));
+    EXPECT_FALSE(m.suspicious());
+    EXPECT_EQ(m.resets(), 1u);
+}

@@ -1,0 +1,45 @@
+/* rfir: the known emitter map of the IR system (thesis 5.1): unique-ID
+ * emitters (LED arrays, code combinations, one place each) and repeated-ID
+ * emitters (one LED, one code, many places). */
+#pragma once
+
+#include <rfir/obs/ir_lattice.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rfir::ir {
+class TEmitterSet {
+  public:
+    TEmitterSet() = default;
+    /** Throws std::invalid_argument on an ID that is not an ascending set of
+     * codes 1..9, or a multi-code (unique) ID used twice. */
+    explicit TEmitterSet(std::vector<TEmitter> emitters);
+
+    /** Reads the `emitter <id> <x> <y> <z>` records of a map file (other
+     * records, e.g. the tags of a ground-truth map, are skipped). Throws
+     * std::runtime_error("FILE:LINE: ...") on a malformed line or a bad ID, and
+     * "FILE: no emitter" when there is none. */
+    static TEmitterSet load(const std::string& path);
+
+    const std::vector<TEmitter>& emitters() const { return m_emitters; }
+    bool empty() const { return m_emitters.empty(); }
+    /** Emitters carrying an ID (indices into emitters()); nullptr if unknown. */
+    const std::vector<size_t>* candidates(const std::string& id) const;
+    /** True if exactly one emitter carries the ID (its reading places the robot
+     * without any prior: the thesis' "unique ID"). */
+    bool isUnambiguous(const std::string& id) const;
+
+    size_t uniqueEmitterCount() const;    //!< emitters with >= 2 codes
+    size_t repeatedEmitterCount() const;  //!< emitters with 1 code
+    size_t distinctIdCount() const { return m_byId.size(); }
+    /** Bounding box of the emitters (x0, y0, x1, y1); zeros when empty. */
+    void bounds(double& x0, double& y0, double& x1, double& y1) const;
+
+  private:
+    std::vector<TEmitter> m_emitters;
+    std::map<std::string, std::vector<size_t>> m_byId;
+};
+
+}  // namespace rfir::ir

@@ -1,0 +1,82 @@
+/* rfir: the IR sensor model of thesis chapter 5 as small functors: the
+ * voltage-vs-distance curve (eq. 5.3), the voltage likelihood (eq. 5.2) and the
+ * belief that picks one of the emitters sharing a repeated ID (eq. 5.1).
+ * Units: metres and volts (the seed's curve takes millimetres). */
+#pragma once
+
+#include <rfir/obs/CObservationIRSignals.h>
+#include <rfir/obs/ir_lattice.h>
+
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/math/TPose2D.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace rfir::ir {
+/** Receiver voltage vs horizontal receiver-emitter distance d (eq. 5.3):
+ * V = c2 d^2 + c1 d + c0. The seed fits d in mm at a 1.2 m vertical distance
+ * over 0-300 mm (-3.27e-5, 2.855e-3, 1.81997); in metres c2 = -32.7 V/m^2,
+ * c1 = 2.855 V/m. */
+struct TVoltageCurve {
+    double c0 = 1.81997, c1 = 2.855, c2 = -32.7;
+    double fitHeight = 1.2;     //!< vertical emitter-receiver distance of the fit (m)
+    double maxDistance = 0.28;  //!< horizontal radius the fit (and sight) covers (m)
+    enum class HeightModel {
+        /** The curve as fitted, whatever the actual height (the seed). */
+        Fixed,
+        /** Same off-axis angle gives the same beam intensity, scaled by the
+         * inverse square of the distance: V(d, h) = (h0/h)^2 V(d h0 / h). */
+        Angular
+    };
+    HeightModel heightModel = HeightModel::Fixed;
+
+    /** Expected voltage (>= 0) at horizontal distance d for vertical distance h
+     * (h only matters for Angular); 0 beyond visibleRadius(h). */
+    double expected(double d, double h) const;
+    /** Horizontal radius within which the emitter is seen. */
+    double visibleRadius(double h) const;
+};
+
+/** Eq. 5.2 in log form with alpha = 1: -(V - Vbar)^2 / (2 sigma^2). */
+double voltageLogLikelihood(double v, double vExpected, double sigma);
+
+/** Eq. 5.1: belief that the emitter at `emitter` is the one seen by a receiver
+ * at `receiver` (exp(-|x_p - x_r|^2 / (2 sigma^2)), sigma = 30 mm in the seed). */
+double emitterBelief(const mrpt::math::TPoint2D& emitter,
+                     const mrpt::math::TPoint2D& receiver, double sigma);
+
+/** Index (into `emitters`) of the candidate with the largest belief (eq. 5.1),
+ * i.e. the candidate nearest to `receiver`. Candidates must be non-empty. */
+size_t mostLikelyEmitter(const std::vector<size_t>& candidates,
+                         const std::vector<TEmitter>& emitters,
+                         const mrpt::math::TPoint2D& receiver);
+
+/** World position of a receiver mounted on a robot at `robot`. */
+mrpt::math::TPoint2D receiverInWorld(const mrpt::math::TPose2D& robot,
+                                     const rfir::obs::TIRReceiver& r);
+
+/** Parameters of the per-reading likelihood beyond eq. 5.2. */
+struct TIRLikelihoodParams {
+    TVoltageCurve curve;
+    double sigmaVolts = 0.1;    //!< sigma of eq. 5.2 (the seed does not give it)
+    double sigmaBelief = 0.03;  //!< sigma of eq. 5.1 (seed: 30 mm)
+    /** Log-likelihood added when the receiver would be beyond the detected
+     * emitter's visible radius (it could not have seen it); 0 disables it
+     * (the seed's eq. 5.2 alone). */
+    double outOfRangeLogLik = -8.0;
+};
+
+/** Log-likelihood of one reading (voltage v) from an emitter at `emitter`, for
+ * a receiver at `receiver`, `h` metres below it: eq. 5.2 with eq. 5.3, plus the
+ * out-of-range term. */
+double readingLogLikelihood(double v, const mrpt::math::TPoint2D& receiver,
+                            const TEmitter& emitter, double h,
+                            const TIRLikelihoodParams& p);
+
+/** Horizontal distances at which the curve gives voltage v (0, 1 or 2 roots in
+ * [0, visibleRadius]; above the curve's maximum, the distance of the maximum);
+ * used to draw poses from a reading (sensor resetting). */
+std::vector<double> distancesForVoltage(const TVoltageCurve& c, double v, double h);
+
+}  // namespace rfir::ir

@@ -1,0 +1,112 @@
+/* rfir: the known map of ceiling IR emitters as an MRPT metric map (thesis
+ * chapter 5): computeObservationLikelihood weighs a robot pose with the IR
+ * readings of a rfir::obs::CObservationIRSignals (eqs. 5.1-5.3). INI-creatable
+ * like MRPT's own maps (short name `irEmitterMap`). See docs/ir.md. */
+#pragma once
+
+#include <rfir/ir/emitter_set.h>
+#include <rfir/ir/sensor_model.h>
+#include <rfir/obs/CObservationIRSignals.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/math/TPose2D.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rfir::maps {
+class CIREmitterMap : public mrpt::maps::CMetricMap {
+    DEFINE_SERIALIZABLE(CIREmitterMap, rfir::maps)
+
+  public:
+    /** Which emitter a reading of a repeated ID is attributed to. */
+    enum class TAssociation {
+        /** INI "estimate": the thesis' belief (eq. 5.1) against the current
+         * robot estimate (setAssociationReference); one emitter for every
+         * particle. Without a reference, repeated readings are skipped. */
+        Estimate,
+        /** INI "particle": each particle picks the emitter with the largest
+         * belief against its own pose. */
+        Particle
+    };
+
+    CIREmitterMap() = default;
+
+    void setEmitters(const rfir::ir::TEmitterSet& e) { m_emitters = e; }
+    /** TEmitterSet::load (throws "FILE:LINE: ..."). */
+    void loadEmitterFile(const std::string& path);
+    const rfir::ir::TEmitterSet& emitters() const { return m_emitters; }
+
+    /** Robot estimate for the Estimate association (nullopt: none yet). */
+    void setAssociationReference(const std::optional<mrpt::math::TPose2D>& p) {
+        m_reference = p;
+    }
+    const std::optional<mrpt::math::TPose2D>& associationReference() const {
+        return m_reference;
+    }
+
+    /** The emitter (index into emitters()) a reading is attributed to for a
+     * robot pose; nullopt if the reading is skipped (no code, an ID absent from
+     * the map, or a repeated ID without a reference under Estimate). */
+    std::optional<size_t> associate(const rfir::obs::CObservationIRSignals::TReading& r,
+                                    const mrpt::math::TPose2D& robot) const;
+
+    /** Vertical emitter-receiver distance used for a reading. */
+    double verticalDistance(const rfir::ir::TEmitter& e,
+                            const rfir::obs::TIRReceiver& r) const;
+
+    /** Sum over the readings of the log-likelihood (eq. 5.2 with 5.3). Readings
+     * with no code (raw windows not decoded yet) are skipped. */
+    double observationLogLikelihood(const rfir::obs::CObservationIRSignals& obs,
+                                    const mrpt::math::TPose2D& robot) const;
+
+    struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
+        rfir::ir::TIRLikelihoodParams params;
+        TAssociation association = TAssociation::Estimate;
+        /** vertical_distance: > 0 forces this emitter-receiver distance (m);
+         * 0 takes emitter z minus receiver z (the fit height if not positive). */
+        double verticalDistance = 0;
+
+        void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
+                                const std::string& section) override;
+        void dumpToTextStream(std::ostream& out) const override;
+        static const std::vector<std::string>& allowedKeys();
+    } likelihoodOptions;
+
+    // CMetricMap interface
+    bool isEmpty() const override { return m_emitters.empty(); }
+    /** Writes "<prefix>_emitters.txt" (textlog emitter records). */
+    void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
+    void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+    std::string asString() const override;
+
+    MAP_DEFINITION_START(CIREmitterMap)
+    /** [<prefix>_creationOpts] emitter_file: path (relative: to the INI's
+     * folder, when the INI is a file); empty: set later by the program. */
+    std::string emitterFile;
+    rfir::maps::CIREmitterMap::TLikelihoodOptions likelihoodOpts;
+    MAP_DEFINITION_END(CIREmitterMap)
+
+  protected:
+    void internal_clear() override;
+    bool internal_insertObservation(const mrpt::obs::CObservation& obs,
+                                    const std::optional<const mrpt::poses::CPose3D>&
+                                        robotPose = std::nullopt) override;
+    double internal_computeObservationLikelihood(
+        const mrpt::obs::CObservation& obs,
+        const mrpt::poses::CPose3D& takenFrom) const override;
+    bool internal_canComputeObservationLikelihood(
+        const mrpt::obs::CObservation& obs) const override;
+
+  private:
+    rfir::ir::TEmitterSet m_emitters;
+    std::optional<mrpt::math::TPose2D> m_reference;
+};
+
+/** Registers the library's classes with MRPT (also done at load time; calling
+ * it keeps the library linked under --as-needed). Idempotent. */
+void registerIRClasses();
+
+}  // namespace rfir::maps

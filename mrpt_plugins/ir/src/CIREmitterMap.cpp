@@ -1,0 +1,168 @@
+/* rfir: CIREmitterMap, the likelihood and the CMetricMap plumbing. */
+#include <rfir/common/map_io.h>
+#include <rfir/maps/CIREmitterMap.h>
+#include <rfir/obs/ir_codes.h>
+
+#include <mrpt/core/initializer.h>
+#include <mrpt/opengl/CPointCloudColoured.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/rtti/CObject.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <sstream>
+
+using namespace rfir::maps;
+using rfir::obs::CObservationIRSignals;
+
+IMPLEMENTS_SERIALIZABLE(CIREmitterMap, CMetricMap, rfir::maps)
+
+namespace rfir::maps {
+void registerIRClasses() {
+    mrpt::rtti::registerClass(CLASS_ID(CIREmitterMap));
+}
+}  // namespace rfir::maps
+
+MRPT_INITIALIZER(rfir_ir_register) {
+    rfir::maps::registerIRClasses();
+}
+
+void CIREmitterMap::loadEmitterFile(const std::string& path) {
+    m_emitters = rfir::ir::TEmitterSet::load(path);
+}
+
+double CIREmitterMap::verticalDistance(const rfir::ir::TEmitter& e,
+                                       const rfir::obs::TIRReceiver& r) const {
+    if (likelihoodOptions.verticalDistance > 0) return likelihoodOptions.verticalDistance;
+    const double h = e.z - r.z;
+    return h > 0 ? h : likelihoodOptions.params.curve.fitHeight;
+}
+
+std::optional<size_t> CIREmitterMap::associate(const CObservationIRSignals::TReading& r,
+                                               const mrpt::math::TPose2D& robot) const {
+    if (r.codes.empty()) return std::nullopt;
+    const auto* cand = m_emitters.candidates(rfir::ir::emitterIdFromCodes(r.codes));
+    if (!cand) return std::nullopt;
+    if (cand->size() == 1) return (*cand)[0];
+    if (likelihoodOptions.association == TAssociation::Particle)
+        return rfir::ir::mostLikelyEmitter(*cand, m_emitters.emitters(),
+                                           rfir::ir::receiverInWorld(robot, r.receiver));
+    if (!m_reference) return std::nullopt;
+    // Eq. 5.1 against the robot estimate (the receiver it places).
+    return rfir::ir::mostLikelyEmitter(
+        *cand, m_emitters.emitters(),
+        rfir::ir::receiverInWorld(*m_reference, r.receiver));
+}
+
+double CIREmitterMap::observationLogLikelihood(const CObservationIRSignals& obs,
+                                               const mrpt::math::TPose2D& robot) const {
+    double ll = 0;
+    for (const auto& r : obs.readings) {
+        const auto idx = associate(r, robot);
+        if (!idx) continue;
+        const auto& e = m_emitters.emitters()[*idx];
+        ll += rfir::ir::readingLogLikelihood(
+            r.volts, rfir::ir::receiverInWorld(robot, r.receiver), e,
+            verticalDistance(e, r.receiver), likelihoodOptions.params);
+    }
+    return ll;
+}
+
+double CIREmitterMap::internal_computeObservationLikelihood(
+    const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const {
+    const auto* ir = dynamic_cast<const CObservationIRSignals*>(&obs);
+    if (!ir) return 0;
+    return observationLogLikelihood(
+        *ir, mrpt::math::TPose2D(takenFrom.x(), takenFrom.y(), takenFrom.yaw()));
+}
+
+bool CIREmitterMap::internal_canComputeObservationLikelihood(
+    const mrpt::obs::CObservation& obs) const {
+    return dynamic_cast<const CObservationIRSignals*>(&obs) != nullptr;
+}
+
+void CIREmitterMap::internal_clear() {
+    m_emitters = {};
+    m_reference.reset();
+}
+
+// The map is known in advance (thesis 5.1): observations do not change it.
+bool CIREmitterMap::internal_insertObservation(
+    const mrpt::obs::CObservation&, const std::optional<const mrpt::poses::CPose3D>&) {
+    return false;
+}
+
+void CIREmitterMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
+    rfir::common::TMapFile f;
+    for (const auto& e : m_emitters.emitters()) {
+        rfir::common::TMapEntry m;
+        m.kind = rfir::common::TMapEntry::Kind::Emitter;
+        m.id = e.id;
+        m.x = e.x;
+        m.y = e.y;
+        m.z = e.z;
+        f.push_back(m);
+    }
+    rfir::common::saveMapFile(prefix + "_emitters.txt", f, "CIREmitterMap");
+}
+
+void CIREmitterMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
+    if (!genericMapParams.enableSaveAs3DObject) return;
+    auto pts = mrpt::opengl::CPointCloudColoured::Create();
+    pts->setPointSize(6);
+    for (const auto& e : m_emitters.emitters()) {
+        // Unique-ID emitters orange, repeated-ID emitters blue.
+        const float r = e.repeated ? 0.1f : 1.0f, g = e.repeated ? 0.3f : 0.5f,
+                    b = e.repeated ? 1.0f : 0.0f;
+        pts->push_back(float(e.x), float(e.y), float(e.z), r, g, b);
+    }
+    o.insert(pts);
+}
+
+std::string CIREmitterMap::asString() const {
+    std::ostringstream s;
+    s << "CIREmitterMap: " << m_emitters.emitters().size() << " emitters ("
+      << m_emitters.uniqueEmitterCount() << " unique-ID, "
+      << m_emitters.repeatedEmitterCount() << " repeated-ID), "
+      << m_emitters.distinctIdCount() << " IDs";
+    return s.str();
+}
+
+uint8_t CIREmitterMap::serializeGetVersion() const {
+    return 0;
+}
+
+void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
+    const auto& p = likelihoodOptions.params;
+    out << p.curve.c0 << p.curve.c1 << p.curve.c2 << p.curve.fitHeight
+        << p.curve.maxDistance << uint8_t(p.curve.heightModel) << p.sigmaVolts
+        << p.sigmaBelief << p.outOfRangeLogLik << uint8_t(likelihoodOptions.association)
+        << likelihoodOptions.verticalDistance;
+    out.WriteAs<uint32_t>(m_emitters.emitters().size());
+    for (const auto& e : m_emitters.emitters()) out << e.id << e.x << e.y << e.z;
+    out << bool(m_reference);
+    if (m_reference) out << m_reference->x << m_reference->y << m_reference->phi;
+}
+
+void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
+    if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    auto& p = likelihoodOptions.params;
+    uint8_t hm = 0, as = 0;
+    in >> p.curve.c0 >> p.curve.c1 >> p.curve.c2 >> p.curve.fitHeight >>
+        p.curve.maxDistance >> hm >> p.sigmaVolts >> p.sigmaBelief >>
+        p.outOfRangeLogLik >> as >> likelihoodOptions.verticalDistance;
+    p.curve.heightModel = rfir::ir::TVoltageCurve::HeightModel(hm);
+    likelihoodOptions.association = TAssociation(as);
+    const uint32_t n = in.ReadAs<uint32_t>();
+    std::vector<rfir::ir::TEmitter> em(n);
+    for (auto& e : em) in >> e.id >> e.x >> e.y >> e.z;
+    m_emitters = rfir::ir::TEmitterSet(std::move(em));
+    bool hasRef = false;
+    in >> hasRef;
+    m_reference.reset();
+    if (hasRef) {
+        mrpt::math::TPose2D r;
+        in >> r.x >> r.y >> r.phi;
+        m_reference = r;
+    }
+}

@@ -1,0 +1,87 @@
+/* rfir: the known emitter map. */
+#include <rfir/common/map_io.h>
+#include <rfir/ir/emitter_set.h>
+#include <rfir/obs/ir_codes.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rfir::ir {
+namespace {
+std::string checkId(const TEmitter& e) {
+    const auto codes = codesFromEmitterId(e.id);
+    if (!codes)
+        return "emitter ID '" + e.id +
+               "' is not an ascending set of frequency codes 1..9 (e.g. 1, 39, 257)";
+    if (*codes != e.codes) return "emitter ID '" + e.id + "' does not match its codes";
+    return {};
+}
+}  // namespace
+
+TEmitterSet::TEmitterSet(std::vector<TEmitter> emitters)
+    : m_emitters(std::move(emitters)) {
+    for (size_t i = 0; i < m_emitters.size(); i++) {
+        auto& e = m_emitters[i];
+        if (e.codes.empty())
+            if (const auto c = codesFromEmitterId(e.id)) e.codes = *c;
+        const std::string err = checkId(e);
+        if (!err.empty()) throw std::invalid_argument(err);
+        e.repeated = isRepeatedId(e.codes);
+        auto& list = m_byId[e.id];
+        if (!e.repeated && !list.empty())
+            throw std::invalid_argument("unique emitter ID '" + e.id + "' used twice");
+        list.push_back(i);
+    }
+}
+
+TEmitterSet TEmitterSet::load(const std::string& path) {
+    const auto file = rfir::common::loadMapFile(path);
+    std::vector<TEmitter> em;
+    for (const auto& r : file) {
+        if (r.kind != rfir::common::TMapEntry::Kind::Emitter) continue;
+        TEmitter e;
+        e.id = r.id;
+        e.x = r.x;
+        e.y = r.y;
+        e.z = r.z;
+        if (const auto c = codesFromEmitterId(r.id)) e.codes = *c;
+        const std::string err = checkId(e);
+        if (!err.empty())
+            throw std::runtime_error(path + ":" + std::to_string(r.line) + ": " + err);
+        em.push_back(e);
+    }
+    if (em.empty()) throw std::runtime_error(path + ": no emitter record in the file");
+    return TEmitterSet(std::move(em));
+}
+
+const std::vector<size_t>* TEmitterSet::candidates(const std::string& id) const {
+    const auto it = m_byId.find(id);
+    return it == m_byId.end() ? nullptr : &it->second;
+}
+
+bool TEmitterSet::isUnambiguous(const std::string& id) const {
+    const auto* c = candidates(id);
+    return c && c->size() == 1;
+}
+
+size_t TEmitterSet::uniqueEmitterCount() const {
+    return size_t(std::count_if(m_emitters.begin(), m_emitters.end(),
+                                [](const TEmitter& e) { return !e.repeated; }));
+}
+
+size_t TEmitterSet::repeatedEmitterCount() const {
+    return m_emitters.size() - uniqueEmitterCount();
+}
+
+void TEmitterSet::bounds(double& x0, double& y0, double& x1, double& y1) const {
+    x0 = y0 = x1 = y1 = 0;
+    for (size_t i = 0; i < m_emitters.size(); i++) {
+        const auto& e = m_emitters[i];
+        if (i == 0 || e.x < x0) x0 = e.x;
+        if (i == 0 || e.y < y0) y0 = e.y;
+        if (i == 0 || e.x > x1) x1 = e.x;
+        if (i == 0 || e.y > y1) y1 = e.y;
+    }
+}
+
+}  // namespace rfir::ir

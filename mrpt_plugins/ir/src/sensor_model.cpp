@@ -1,0 +1,99 @@
+/* rfir: IR sensor model functors (thesis eqs. 5.1-5.3). */
+#include <rfir/ir/sensor_model.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rfir::ir {
+double TVoltageCurve::visibleRadius(double h) const {
+    if (heightModel == HeightModel::Angular && h > 0) return maxDistance * h / fitHeight;
+    return maxDistance;
+}
+
+double TVoltageCurve::expected(double d, double h) const {
+    double scale = 1.0, dd = d;
+    if (heightModel == HeightModel::Angular && h > 0) {
+        // Same angle off the LED axis: d / h = d0 / h0.
+        dd = d * fitHeight / h;
+        scale = (fitHeight / h) * (fitHeight / h);
+    }
+    if (dd > maxDistance) return 0.0;
+    return std::max(0.0, scale * (c2 * dd * dd + c1 * dd + c0));
+}
+
+double voltageLogLikelihood(double v, double vExpected, double sigma) {
+    const double e = v - vExpected;
+    return -e * e / (2 * sigma * sigma);
+}
+
+double emitterBelief(const mrpt::math::TPoint2D& e, const mrpt::math::TPoint2D& r,
+                     double sigma) {
+    const double dx = e.x - r.x, dy = e.y - r.y;
+    return std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma));
+}
+
+size_t mostLikelyEmitter(const std::vector<size_t>& candidates,
+                         const std::vector<TEmitter>& emitters,
+                         const mrpt::math::TPoint2D& r) {
+    if (candidates.empty())
+        throw std::invalid_argument("mostLikelyEmitter: no candidate");
+    // argmax of eq. 5.1 = argmin of the squared distance (no underflow at
+    // distances where exp() is 0 for every candidate).
+    size_t best = candidates[0];
+    double bestD2 = 1e300;
+    for (size_t i : candidates) {
+        const double dx = emitters[i].x - r.x, dy = emitters[i].y - r.y;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 < bestD2) {
+            bestD2 = d2;
+            best = i;
+        }
+    }
+    return best;
+}
+
+mrpt::math::TPoint2D receiverInWorld(const mrpt::math::TPose2D& p,
+                                     const rfir::obs::TIRReceiver& r) {
+    const double c = std::cos(p.phi), s = std::sin(p.phi);
+    return {p.x + c * r.x - s * r.y, p.y + s * r.x + c * r.y};
+}
+
+double readingLogLikelihood(double v, const mrpt::math::TPoint2D& rcv, const TEmitter& e,
+                            double h, const TIRLikelihoodParams& p) {
+    const double d = std::hypot(e.x - rcv.x, e.y - rcv.y);
+    double ll = voltageLogLikelihood(v, p.curve.expected(d, h), p.sigmaVolts);
+    if (d > p.curve.visibleRadius(h)) ll += p.outOfRangeLogLik;
+    return ll;
+}
+
+std::vector<double> distancesForVoltage(const TVoltageCurve& c, double v, double h) {
+    // Solve in the fitted frame: (h0/h)^2 curve(d0) = v, d = d0 h / h0.
+    double scale = 1.0, back = 1.0;
+    if (c.heightModel == TVoltageCurve::HeightModel::Angular && h > 0) {
+        scale = (c.fitHeight / h) * (c.fitHeight / h);
+        back = h / c.fitHeight;
+    }
+    const double a = c.c2, b = c.c1, k = c.c0 - v / scale;
+    std::vector<double> out;
+    auto keep = [&](double d0) {
+        if (d0 >= 0 && d0 <= c.maxDistance) out.push_back(d0 * back);
+    };
+    if (std::abs(a) < 1e-15) {
+        if (std::abs(b) > 1e-15) keep(-k / b);
+        return out;
+    }
+    const double disc = b * b - 4 * a * k;
+    if (disc < 0) {
+        // Above the curve's maximum (noise): the distance of the maximum.
+        if (a < 0) keep(-b / (2 * a));
+        return out;
+    }
+    const double r1 = (-b - std::sqrt(disc)) / (2 * a),
+                 r2 = (-b + std::sqrt(disc)) / (2 * a);
+    keep(std::min(r1, r2));
+    if (r2 != r1) keep(std::max(r1, r2));
+    return out;
+}
+
+}  // namespace rfir::ir

@@ -31,6 +31,7 @@ std::pair<double, double> range(const TLinePlot& p, bool isX, std::optional<doub
     if (!(b >= a)) a = log ? 1 : 0, b = log ? 10 : 1;
     auto f = [&](double v) { return log ? std::log10(v) : v; };
     auto g = [&](double v) { return log ? std::pow(10.0, v) : v; };
+    const double dataMin = a, dataMax = b;
     double fa = f(a), fb = f(b);
     if (fb - fa < 1e-12)
     {
@@ -40,8 +41,9 @@ std::pair<double, double> range(const TLinePlot& p, bool isX, std::optional<doub
     const double pad = 0.05 * (fb - fa);
     a = lo ? *lo : g(fa - pad);
     b = hi ? *hi : g(fb + pad);
-    // A linear axis of non-negative data starts at 0 when 0 is close.
-    if (!log && !lo && a < 0 && f(a) + pad >= 0) a = 0;
+    // A linear y axis of non-negative data starts at 0 when 0 is not far off
+    // (errors, times: the reader compares magnitudes).
+    if (!isX && !log && !lo && dataMin >= 0 && dataMin <= 0.3 * dataMax) a = 0;
     if (!(b > a) || (log && a <= 0))
         throw std::runtime_error("line plot: empty or invalid axis range");
     return {a, b};

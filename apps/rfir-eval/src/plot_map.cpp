@@ -151,16 +151,30 @@ void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f)
 
 mrpt::img::CImage renderMapFigure(const TMapFigure& f, TPlotAxes* axesOut)
 {
-    CImage img = blankCanvas(f.width, f.height);
     const auto legend = legendOf(f);
-    const int top = f.title.empty() ? 15 : 45, bottom = f.height - 62;
-    const int right = f.width - (legend.empty() ? 20 : legendWidth(legend) + 24);
-    const int left = 95;
-    if (right - left < 100 || bottom - top < 100)
+    const int legendW = legend.empty() ? 0 : legendWidth(legend) + 24;
+    const int legendH = int(legend.size()) * 20 + 12;
+    int w = f.width, h = f.height;
+    const int top = f.title.empty() ? 15 : 45, left = 95, marginB = 62;
+    const int marginR = legend.empty() ? 20 : legendW;
+    if (w - marginR - left < 100 || h - marginB - top < 100)
         throw std::runtime_error("map figure: the image is too small for its legend");
-    const TPlotAxes ax = fitAxes(dataBounds(f), f.marginMetres, left, top, right, bottom);
+    const TBounds b = dataBounds(f);
+    if (f.fitToData)
+    {
+        // Equal aspect: give back the unused width or height of the image.
+        const double rx = std::max(b.x1 - b.x0 + 2 * f.marginMetres, 0.05);
+        const double ry = std::max(b.y1 - b.y0 + 2 * f.marginMetres, 0.05);
+        const int pw = w - marginR - left, ph = h - marginB - top;
+        const double s = std::min(pw / rx, ph / ry);
+        w -= std::max(0, pw - int(std::ceil(rx * s)) - 1);
+        h -= std::max(0, ph - std::max(int(std::ceil(ry * s)) + 1, legendH));
+    }
+    CImage img = blankCanvas(w, h);
+    const int right = w - marginR, bottom = h - marginB;
+    const TPlotAxes ax = fitAxes(b, f.marginMetres, left, top, right, bottom);
     const double s = (right - left) / (ax.x1 - ax.x0);
-    const double step = niceStep(80 / s);  // ticks at least 80 px apart
+    const double step = niceStep(60 / s);  // ticks at least 60 px apart
     drawFrame(img, ax, linearTicks(ax.x0, ax.x1, step), linearTicks(ax.y0, ax.y1, step),
               "x [m]", "y [m]");
     drawTruth(img, ax, f);

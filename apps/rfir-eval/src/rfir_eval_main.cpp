@@ -21,6 +21,12 @@ struct TArgs
     bool jsonOnly = false, noOdometry = false, ids = false;
 };
 
+/** Thrown to end the program with a given code, output already printed. */
+struct TExit
+{
+    int code;
+};
+
 TArgs parse(int argc, char** argv)
 {
     TCLAP::CmdLine cmd(
@@ -53,7 +59,17 @@ TArgs parse(int argc, char** argv)
     TCLAP::ValueArg<std::string> jsonFile("", "json-file", "also write the JSON line to "
                                           "FILE (atomically)", false, "", "FILE", cmd);
     TCLAP::SwitchArg jsonOnly("", "json-only", "print only the JSON line", cmd);
-    cmd.parse(argc, argv);
+    if (!cmd.parse(argc, argv))
+    {
+        // MRPT's TCLAP returns false both after --help/--version and after
+        // printing a usage error.
+        for (int i = 1; i < argc; i++)
+        {
+            const std::string s = argv[i];
+            if (s == "-h" || s == "--help" || s == "--version") throw TExit{0};
+        }
+        throw TExit{2};
+    }
     TArgs a;
     a.path = path.getValue(), a.gtPath = gtPath.getValue(), a.map = map.getValue();
     a.gtMap = gtMap.getValue(), a.rawlog = rawlog.getValue(), a.label = label.getValue();
@@ -144,6 +160,10 @@ int main(int argc, char** argv)
     try
     {
         return run(parse(argc, argv));
+    }
+    catch (const TExit& e)
+    {
+        return e.code;
     }
     catch (const TCLAP::ArgException& e)
     {

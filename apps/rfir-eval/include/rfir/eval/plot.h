@@ -51,7 +51,10 @@ struct TMapFigure
     bool showIds = false;      //!< write the IDs of estimated entries
     /** Link each estimated landmark to its true position (error vectors). */
     bool showErrorLinks = false;
-    int width = 1000, height = 900;  //!< whole image, pixels
+    int width = 1000, height = 900;  //!< whole image, pixels (at most, see fitToData)
+    /** Shrink the image's width or height to the data's aspect ratio (the
+     * axes have equal scales), instead of widening the shown data range. */
+    bool fitToData = true;
     /** Extra margin around the data, metres. */
     double marginMetres = 0.1;
 };

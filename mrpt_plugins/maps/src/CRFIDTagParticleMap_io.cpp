@@ -74,7 +74,8 @@ void writeEstimator(CArchive& a, const CRFIDTagParticleMap::TEstimator& est)
     a.WriteAs<uint64_t>(ps.updateCount());
 }
 
-CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a)
+CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a,
+                                              const rfir::models::PointEstimate& est)
 {
     const auto kind = a.ReadAs<uint8_t>();
     if (kind == 0)
@@ -88,7 +89,7 @@ CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a)
         for (double& x : w) a >> x;
         const auto upd = a.ReadAs<uint64_t>();
         rfir::models::TagParticleFilter pf;
-        pf.setState(p, std::move(pts), std::move(w), upd);
+        pf.setState(p, std::move(pts), std::move(w), upd, est);
         return pf;
     }
     if (kind != 1) throw std::runtime_error("CRFIDTagParticleMap: unknown estimator kind");
@@ -117,6 +118,7 @@ void writeEntries(CArchive& a, const std::vector<const CRFIDTagParticleMap::TTag
         a.WriteAs<uint64_t>(e->visits);
         a.WriteAs<uint64_t>(e->lastReadStep);
         writeEst(a, e->visitStartEstimate);
+        writeEst(a, e->estimate);
         writeEstimator(a, e->estimator);
     }
 }
@@ -134,7 +136,8 @@ void readEntries(CArchive& a, TABLE& t)
         e.visits = a.ReadAs<uint64_t>();
         e.lastReadStep = a.ReadAs<uint64_t>();
         e.visitStartEstimate = readEst(a);
-        e.estimator = readEstimator(a);
+        const auto est = readEst(a);
+        e.estimator = readEstimator(a, est);
         e.estimate = std::visit([](auto& x) { return x.estimate(); }, e.estimator);
         const std::string id = e.id;
         t.emplace(id, std::move(e));

@@ -67,7 +67,8 @@ void TagParticleFilter::update(const PointLogLikelihood& logLik,
 }
 
 void TagParticleFilter::setState(const Params& p, std::vector<mrpt::math::TPoint2D> pts,
-                                 std::vector<double> logW, uint64_t updates)
+                                 std::vector<double> logW, uint64_t updates,
+                                 const PointEstimate& estimate)
 {
     if (pts.size() != logW.size() || pts.empty())
         throw std::invalid_argument("TagParticleFilter::setState: bad sizes");
@@ -75,7 +76,7 @@ void TagParticleFilter::setState(const Params& p, std::vector<mrpt::math::TPoint
     m_pts = std::move(pts);
     m_logW = std::move(logW);
     m_updates = updates;
-    m_est = weightedEstimate(m_pts, m_logW);
+    m_est = estimate;
 }
 
 }  // namespace rfir::models

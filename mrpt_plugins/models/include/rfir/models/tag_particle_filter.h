@@ -52,9 +52,11 @@ public:
     uint64_t updateCount() const { return m_updates; }
     bool empty() const { return m_pts.empty(); }
 
-    /** Restores a serialized state; throws if sizes disagree. */
+    /** Restores a serialized state; throws if sizes disagree. The estimate is
+     * given because it was taken before the last resampling (line 13). */
     void setState(const Params& p, std::vector<mrpt::math::TPoint2D> pts,
-                  std::vector<double> logW, uint64_t updates);
+                  std::vector<double> logW, uint64_t updates,
+                  const PointEstimate& estimate);
 
 private:
     Params m_p;

@@ -1,0 +1,154 @@
+// Likelihood values computed by hand, resampling and INI key checks.
+#include <rfir/models/detection_likelihood.h>
+#include <rfir/models/ini_check.h>
+#include <rfir/models/range_bearing.h>
+#include <rfir/models/resampling.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <cmath>
+
+using namespace rfir::models;
+
+TEST(DetectionLikelihood, StepInsideEdgeOutside)
+{
+    const double h = 0.03, beta = 1.618;
+    // Inside the square: w = 1 exactly.
+    EXPECT_EQ(std::exp(stepDetectionLogLikelihood(0.01, -0.02, h, h, beta)), 1.0);
+    // On the edge (|ex| = sigma is not "< sigma"): beta e^{-1/2} = 0.98137
+    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.03, 0.0, h, h, beta)),
+                0.9813666074, 1e-9);
+    // Two sigmas out: 1.618 e^{-2} = 0.21897
+    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.06, 0.0, h, h, beta)),
+                0.2189724883, 1e-9);
+    // Outside in x, inside in y: e^T e uses both components (thesis eq. 3.7)
+    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.04, 0.01, h, h, beta)),
+                0.6292330225, 1e-9);
+    // Rectangular reader: per-axis sigma = half-size (0.15 x 0.05)
+    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.2, 0.0, 0.15, 0.05, beta)),
+                0.6651796860, 1e-9);
+    EXPECT_EQ(stepDetectionLogLikelihood(0.14, 0.04, 0.15, 0.05, beta), 0.0);
+}
+
+TEST(DetectionLikelihood, GaussianAndFunctor)
+{
+    EXPECT_NEAR(gaussianDetectionLogLikelihood(0.03, 0.03, 0.03, 0.03), -1.0, 1e-12);
+    DetectionModelParams p;
+    p.model = DetectionModel::Gaussian;
+    p.gaussianSigmaScale = 2.0;  // sigma = 2 * half = 0.06
+    const DetectionLikelihood g(p);
+    EXPECT_NEAR(g.logLikelihoodOffset(0.06, 0.0, 0.03, 0.03), -0.5, 1e-12);
+}
+
+TEST(DetectionLikelihood, OffsetIsInRobotFrame)
+{
+    const DetectionLikelihood step;  // defaults: step, beta 1.618
+    const mrpt::math::TPose2D robot(1.0, 2.0, M_PI / 2);
+    const ReaderArea r{0.1, 0.0, 0.03, 0.03};
+    const auto c = readerCentreInWorld(robot, r);
+    EXPECT_NEAR(c.x, 1.0, 1e-12);
+    EXPECT_NEAR(c.y, 2.1, 1e-12);
+    EXPECT_EQ(step.likelihood(robot, r, {1.0, 2.1}), 1.0);
+    // 60 mm to the world -x is 60 mm to the robot's +y (two sigmas out).
+    EXPECT_NEAR(step.likelihood(robot, r, {0.94, 2.1}), 0.2189724883, 1e-9);
+    // A 0.3 x 0.06 reader rotated by 90 deg: 0.1 m along world -x is inside.
+    const ReaderArea wide{0.1, 0.0, 0.03, 0.15};
+    EXPECT_EQ(step.likelihood(robot, wide, {0.9, 2.1}), 1.0);
+    EXPECT_LT(step.likelihood(robot, wide, {1.0, 2.2}), 0.5);
+}
+
+TEST(RangeBearing, LikelihoodAndInverse)
+{
+    RangeBearingParams p;
+    p.sigmaRange = 0.01;
+    p.sigmaBearing = 0.05;
+    const mrpt::math::TPose2D s(0, 0, 0);
+    EXPECT_NEAR(rangeBearingLogLikelihood(s, {1, 0}, 1.01, 0.0, p), -0.5, 1e-9);
+    EXPECT_NEAR(rangeBearingLogLikelihood(s, {1, 0}, 1.0, 0.1, p), -2.0, 1e-9);
+    // Bearing error wraps: sensor looking at -x, reading +pi-0.01 vs -pi+0.01.
+    const mrpt::math::TPose2D back(0, 0, M_PI);
+    EXPECT_NEAR(rangeBearingLogLikelihood(back, {-1, -0.01}, 1.0, -M_PI + 0.01, p),
+                rangeBearingLogLikelihood(back, {-1, -0.01}, 1.0, M_PI + 0.01, p), 1e-9);
+    EXPECT_GT(rangeBearingLogLikelihood(back, {-1, -0.01}, 1.00005, 0.01, p), -0.1);
+    const auto q = rangeBearingToPoint({1, 1, M_PI / 2}, 2.0, M_PI / 2);
+    EXPECT_NEAR(q.x, -1.0, 1e-12);
+    EXPECT_NEAR(q.y, 1.0, 1e-12);
+    double r, br;
+    predictRangeBearing({1, 1, M_PI / 2}, q, r, br);
+    EXPECT_NEAR(r, 2.0, 1e-12);
+    EXPECT_NEAR(br, M_PI / 2, 1e-12);
+    mrpt::random::CRandomGenerator rng(3);
+    const auto pts = sampleRangeBearingInverse(s, 0.4, 0.0, p, 4000, rng);
+    double mx = 0, vy = 0;
+    for (const auto& pt : pts) mx += pt.x / pts.size();
+    for (const auto& pt : pts) vy += pt.y * pt.y / pts.size();
+    EXPECT_NEAR(mx, 0.4, 0.002);
+    EXPECT_NEAR(std::sqrt(vy), 0.4 * 0.05, 0.002);  // lateral spread = r sigma_b
+}
+
+TEST(Resampling, SystematicIsExactAndSeeded)
+{
+    mrpt::random::CRandomGenerator rng(7);
+    const std::vector<double> lw = {0.0, std::log(3.0)};
+    const auto idx = resampleIndices(lw, 4, ResamplingScheme::Systematic, rng);
+    EXPECT_EQ(idx, (std::vector<size_t>{0, 1, 1, 1}));
+    const std::vector<double> lw2 = {-1e300, 0.0, -std::numeric_limits<double>::infinity()};
+    for (auto s : {ResamplingScheme::Systematic, ResamplingScheme::Stratified,
+                   ResamplingScheme::Multinomial})
+    {
+        for (size_t i : resampleIndices(lw2, 10, s, rng)) EXPECT_EQ(i, 1u);
+        mrpt::random::CRandomGenerator a(11), b(11);
+        const std::vector<double> w = {0.1, 0.5, -0.3, 0.0, 1.0};
+        EXPECT_EQ(resampleIndices(w, 50, s, a), resampleIndices(w, 50, s, b));
+    }
+    mrpt::random::CRandomGenerator m(5);
+    const auto many = resampleIndices(lw, 20000, ResamplingScheme::Multinomial, m);
+    const double frac0 = std::count(many.begin(), many.end(), 0u) / 20000.0;
+    EXPECT_NEAR(frac0, 0.25, 0.015);
+    EXPECT_NEAR(effectiveSampleSize({0, 0, 0, 0}), 4.0, 1e-12);
+    EXPECT_THROW(resampleIndices({}, 3, ResamplingScheme::Systematic, rng),
+                 std::invalid_argument);
+    EXPECT_THROW(resamplingSchemeFromString("residual"), std::invalid_argument);
+}
+
+TEST(IniCheck, UnknownKeysAndBadValuesNameTheKey)
+{
+    mrpt::config::CConfigFileMemory cfg(
+        "[s]\nalpha = 1\nbeta = x\nmode = fast\nn = 0\nm = -2\n");
+    EXPECT_NO_THROW(rfir::checkIniKeys(cfg, "s", {"alpha", "beta", "mode", "n", "m"}));
+    EXPECT_NO_THROW(rfir::checkIniKeys(cfg, "missing", {}));
+    try
+    {
+        rfir::checkIniKeys(cfg, "s", {"alpha", "beta", "n", "m"});
+        FAIL();
+    }
+    catch (const std::runtime_error& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("'mode'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("[s]"), std::string::npos) << e.what();
+    }
+    auto msg = [&](auto f) {
+        try
+        {
+            f();
+        }
+        catch (const std::runtime_error& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("no throw");
+    };
+    EXPECT_NE(msg([&] { rfir::readIniEnum(cfg, "s", "mode", {"slow", "exact"}, 0); })
+                  .find("mode"),
+              std::string::npos);
+    EXPECT_NE(msg([&] { rfir::readIniPositiveInt(cfg, "s", "n", 5); }).find("[s] n"),
+              std::string::npos);
+    EXPECT_NE(msg([&] { rfir::readIniPositiveInt(cfg, "s", "m", 5); }).find("[s] m"),
+              std::string::npos);
+    EXPECT_NE(msg([&] { rfir::readIniDouble(cfg, "s", "beta", 1, 0, true); }).find("beta"),
+              std::string::npos);
+    EXPECT_EQ(rfir::readIniPositiveInt(cfg, "s", "absent", 5), 5u);
+    EXPECT_EQ(rfir::readIniEnum(cfg, "s", "absent", {"a", "b"}, 1), 1u);
+    EXPECT_EQ(rfir::readIniDouble(cfg, "s", "alpha", 7, 0, true), 1.0);
+}

@@ -15,42 +15,35 @@
 namespace fs = std::filesystem;
 using mrpt::poses::CPose2D;
 
-namespace
-{
-struct TRun
-{
+namespace {
+struct TRun {
     int rc = -1;
     std::string out, err;
 };
 
-std::string slurp(const fs::path& p)
-{
+std::string slurp(const fs::path& p) {
     std::ifstream f(p);
     std::stringstream s;
     s << f.rdbuf();
     return s.str();
 }
 
-class EvalCli : public ::testing::Test
-{
-protected:
+class EvalCli : public ::testing::Test {
+  protected:
     fs::path dir;
-    void SetUp() override
-    {
+    void SetUp() override {
         dir = fs::temp_directory_path() /
               ("rfir_eval_cli_" + std::to_string(::getpid()) + "_" +
                ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir);
     }
     void TearDown() override { fs::remove_all(dir); }
-    std::string file(const std::string& name, const std::string& text)
-    {
+    std::string file(const std::string& name, const std::string& text) {
         const auto p = dir / name;
         std::ofstream(p) << text;
         return p.string();
     }
-    TRun run(const std::string& args)
-    {
+    TRun run(const std::string& args) {
         const std::string cmd = std::string(RFIR_BINARY_DIR) + "/bin/rfir-eval " + args +
                                 " > " + (dir / "out").string() + " 2> " +
                                 (dir / "err").string();
@@ -70,24 +63,23 @@ const char* kGt =
     "2 2 0 0 0 0 0 1\n";
 }  // namespace
 
-TEST_F(EvalCli, HelpExitsZero)
-{
+TEST_F(EvalCli, HelpExitsZero) {
     const auto r = run("--help");
     EXPECT_EQ(r.rc, 0);
     EXPECT_NE(r.out.find("--gt-path"), std::string::npos);
 }
 
-TEST_F(EvalCli, TableAndJson)
-{
+TEST_F(EvalCli, TableAndJson) {
     const auto gt = file("gt.tum", kGt);
     // 30 mm off in y at t = 0 and t = 2, exact at t = 1.5 (interpolated truth).
-    const auto est = file("est.tum", "0 0 0.03 0 0 0 0 1\n1.5 1.5 0 0 0 0 0 1\n"
-                                     "2 2 -0.03 0 0 0 0 1\n");
+    const auto est = file("est.tum",
+                          "0 0 0.03 0 0 0 0 1\n1.5 1.5 0 0 0 0 0 1\n"
+                          "2 2 -0.03 0 0 0 0 1\n");
     const auto gm = file("gt_map.txt", "tag a 0 0\ntag b 1 1\nemitter 39 0 0 2.4\n");
     const auto em = file("map.txt", "tag a 0.03 0.04 0.01 0.01\n");
     const auto png = (dir / "fig.png").string();
-    auto r = run("--path " + est + " --gt-path " + gt + " --map " + em + " --gt-map " + gm +
-                 " --label PS-SLAM --plot " + png);
+    auto r = run("--path " + est + " --gt-path " + gt + " --map " + em + " --gt-map " +
+                 gm + " --label PS-SLAM --plot " + png);
     ASSERT_EQ(r.rc, 0) << r.err;
     EXPECT_NE(r.out.find("Robot localization"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("PS-SLAM"), std::string::npos);
@@ -103,8 +95,7 @@ TEST_F(EvalCli, TableAndJson)
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
 }
 
-TEST_F(EvalCli, MalformedInputsNameFileAndLine)
-{
+TEST_F(EvalCli, MalformedInputsNameFileAndLine) {
     const auto gt = file("gt.tum", kGt);
     const auto bad = file("bad.tum", "0 0 0 0 0 0 0 1\n1 1 zero 0 0 0 0 1\n");
     auto r = run("--path " + bad + " --gt-path " + gt);
@@ -115,7 +106,8 @@ TEST_F(EvalCli, MalformedInputsNameFileAndLine)
     const auto est = file("est.tum", "0 0 0 0 0 0 0 1\n");
     const auto gm = file("gt_map.txt", "tag a 0 0\n");
     const auto badMap = file("map.txt", "tag a 0 0\n\ntag b 1\n");
-    r = run("--path " + est + " --gt-path " + gt + " --map " + badMap + " --gt-map " + gm);
+    r = run("--path " + est + " --gt-path " + gt + " --map " + badMap + " --gt-map " +
+            gm);
     EXPECT_NE(r.rc, 0);
     EXPECT_NE(r.err.find(badMap + ":3:"), std::string::npos) << r.err;
 
@@ -134,8 +126,7 @@ TEST_F(EvalCli, MalformedInputsNameFileAndLine)
     EXPECT_NE(r.err.find("time span"), std::string::npos) << r.err;
 }
 
-TEST_F(EvalCli, RawlogGivesPassedOverAndDeadReckoning)
-{
+TEST_F(EvalCli, RawlogGivesPassedOverAndDeadReckoning) {
     // The robot drives 1 m along x in 0.1 s steps; its odometry over-reads 10 %.
     rfir::obs::CObservationLogHeader hdr;
     hdr.readers.push_back({"R1", 0.1, 0, 0.03, 0.03});
@@ -143,8 +134,7 @@ TEST_F(EvalCli, RawlogGivesPassedOverAndDeadReckoning)
     std::ostringstream gt;
     {
         rfir::common::CRawlogWriter w(rawlog, hdr);
-        for (int k = 0; k <= 10; k++)
-        {
+        for (int k = 0; k <= 10; k++) {
             w.writeStep(0.1 * k, CPose2D(0.11 * k, 0, 0), {});
             gt << 0.1 * k << " " << 0.1 * k << " 0 0 0 0 0 1\n";
         }
@@ -152,8 +142,9 @@ TEST_F(EvalCli, RawlogGivesPassedOverAndDeadReckoning)
     }
     const auto gtPath = file("gt.tum", gt.str());
     // Reader 0.1 m ahead: tags on the line x in [0.07, 1.13] are passed over.
-    const auto gm = file("gt_map.txt", "tag a 0.5 0.01\ntag b 1.12 0\ntag c 0.5 0.05\n"
-                                       "tag d 0.05 0\ntag e 3 3\n");
+    const auto gm = file("gt_map.txt",
+                         "tag a 0.5 0.01\ntag b 1.12 0\ntag c 0.5 0.05\n"
+                         "tag d 0.05 0\ntag e 3 3\n");
     const auto em = file("map.txt", "tag a 0.5 0.0\ntag e 3 3\n");
     const auto r = run("--path " + gtPath + " --gt-path " + gtPath + " --map " + em +
                        " --gt-map " + gm + " --rawlog " + rawlog + " --json-only");
@@ -161,7 +152,8 @@ TEST_F(EvalCli, RawlogGivesPassedOverAndDeadReckoning)
     EXPECT_NE(r.out.find("\"tags_passed_over\":2,\"tags_mapped_of_passed_over\":1"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find("\"tags_mapped\":2,\"tags_total\":5"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"tags_mapped\":2,\"tags_total\":5"), std::string::npos)
+        << r.out;
     // Dead reckoning: 10 % over-read, final error 0.1 m, mean 0.05 m over 11 poses.
     EXPECT_NE(r.out.find("\"dead_reckoning\":{\"poses\":11"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("\"max_dist\":0.1"), std::string::npos) << r.out;

@@ -7,16 +7,14 @@
 #include <cmath>
 
 using namespace rfir::eval;
+using mrpt::poses::CPose2D;
 using rfir::common::TMapEntry;
 using rfir::common::TMapFile;
 using rfir::common::TPath2D;
-using mrpt::poses::CPose2D;
 
-namespace
-{
+namespace {
 TMapEntry tag(const std::string& id, double x, double y,
-              TMapEntry::Kind k = TMapEntry::Kind::Tag)
-{
+              TMapEntry::Kind k = TMapEntry::Kind::Tag) {
     TMapEntry e;
     e.kind = k;
     e.id = id;
@@ -26,17 +24,17 @@ TMapEntry tag(const std::string& id, double x, double y,
 }
 }  // namespace
 
-TEST(EvalMetrics, WrapToPi)
-{
+TEST(EvalMetrics, WrapToPi) {
     EXPECT_NEAR(wrapToPi(3 * M_PI / 2), -M_PI / 2, 1e-12);
     EXPECT_NEAR(wrapToPi(-M_PI), M_PI, 1e-12);  // (-pi, pi]
     EXPECT_NEAR(wrapToPi(M_PI), M_PI, 1e-12);
     EXPECT_NEAR(wrapToPi(6.2), 6.2 - 2 * M_PI, 1e-12);
 }
 
-TEST(EvalMetrics, InterpolationLinearAndAcrossPi)
-{
-    const TPath2D gt{{0, CPose2D(0, 0, 0)}, {1, CPose2D(1, 2, 1.0)}, {2, CPose2D(1, 2, 3.0)},
+TEST(EvalMetrics, InterpolationLinearAndAcrossPi) {
+    const TPath2D gt{{0, CPose2D(0, 0, 0)},
+                     {1, CPose2D(1, 2, 1.0)},
+                     {2, CPose2D(1, 2, 3.0)},
                      {3, CPose2D(1, 2, -3.0)}};
     auto p = interpolatePose(gt, 0.25);
     ASSERT_TRUE(p);
@@ -56,12 +54,12 @@ TEST(EvalMetrics, InterpolationLinearAndAcrossPi)
     EXPECT_TRUE(interpolatePose(gt, 3.0 + 1e-7));  // within the stamp tolerance
 }
 
-TEST(EvalMetrics, RobotErrorsByHand)
-{
+TEST(EvalMetrics, RobotErrorsByHand) {
     const TPath2D gt{{0, CPose2D(0, 0, 3.1)}, {2, CPose2D(2, 0, 3.1)}};
     // Errors: t=0 (0.03, -0.04), dtheta = -3.1 - 3.1 wrapped = 2 pi - 6.2 = 0.0832;
     // t=1 (gt 1,0): (-0.01, 0.0), dtheta -0.1; t=9: outside, skipped.
-    const TPath2D est{{0, CPose2D(0.03, -0.04, -3.1)}, {1, CPose2D(0.99, 0, 3.0)},
+    const TPath2D est{{0, CPose2D(0.03, -0.04, -3.1)},
+                      {1, CPose2D(0.99, 0, 3.0)},
                       {9, CPose2D(5, 5, 0)}};
     const auto r = computeRobotErrors(est, gt);
     ASSERT_EQ(r.perPose.size(), 2u);
@@ -82,27 +80,22 @@ TEST(EvalMetrics, RobotErrorsByHand)
     EXPECT_NEAR(r.stats.max_dist, 0.05, 1e-12);
 }
 
-TEST(EvalMetrics, RobotErrorsRejectBadPaths)
-{
+TEST(EvalMetrics, RobotErrorsRejectBadPaths) {
     const TPath2D gt{{0, CPose2D(0, 0, 0)}, {1, CPose2D(1, 0, 0)}};
     EXPECT_THROW(computeRobotErrors({}, gt), std::runtime_error);
     EXPECT_THROW(computeRobotErrors({{5, CPose2D()}}, gt), std::runtime_error);
     const TPath2D unsorted{{1, CPose2D()}, {0.5, CPose2D()}};
-    try
-    {
+    try {
         computeRobotErrors({{0.7, CPose2D()}}, unsorted);
         FAIL() << "unsorted ground truth accepted";
-    }
-    catch (const std::runtime_error& e)
-    {
+    } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("non-decreasing time (pose 2"),
                   std::string::npos)
             << e.what();
     }
 }
 
-TEST(EvalMetrics, MapErrorsByHand)
-{
+TEST(EvalMetrics, MapErrorsByHand) {
     const TMapFile gt{tag("a", 0, 0), tag("b", 1, 1), tag("c", 2, 2),
                       tag("E", 5, 5, TMapEntry::Kind::Emitter)};
     const TMapFile est{tag("a", 0.03, 0.04), tag("b", 0.9, 1.0), tag("zz", 7, 7)};
@@ -120,8 +113,7 @@ TEST(EvalMetrics, MapErrorsByHand)
     EXPECT_FALSE(m.passedOver);
 }
 
-TEST(EvalMetrics, MapKindInference)
-{
+TEST(EvalMetrics, MapKindInference) {
     const TMapFile gt{tag("a", 0, 0), tag("a", 1, 0, TMapEntry::Kind::Landmark)};
     const TMapFile lm{tag("a", 1.5, 0, TMapEntry::Kind::Landmark)};
     const auto m = computeMapErrors(lm, gt);
@@ -132,20 +124,18 @@ TEST(EvalMetrics, MapKindInference)
     EXPECT_EQ(computeMapErrors(mixed, gt, TMapEntry::Kind::Tag).mapped, 1u);
 }
 
-TEST(EvalMetrics, TagsPassedOverStraightLine)
-{
+TEST(EvalMetrics, TagsPassedOverStraightLine) {
     // One 60 mm reader at the robot centre; only the two end poses are given.
     const std::vector<rfir::obs::TRFIDReader> readers{{"R", 0, 0, 0.03, 0.03}};
     const TPath2D path{{0, CPose2D(0, 0, 0)}, {1, CPose2D(0.4, 0, 0)}};
-    const TMapFile gt{tag("in", 0.2, 0.02),    tag("in2", 0.1, -0.029),
-                      tag("off", 0.2, 0.04),   tag("end", 0.42, 0),
-                      tag("beyond", 0.44, 0),  tag("behind", -0.04, 0)};
+    const TMapFile gt{tag("in", 0.2, 0.02),   tag("in2", 0.1, -0.029),
+                      tag("off", 0.2, 0.04),  tag("end", 0.42, 0),
+                      tag("beyond", 0.44, 0), tag("behind", -0.04, 0)};
     const auto s = tagsPassedOver(gt, path, readers);
     EXPECT_EQ(s, (std::set<std::string>{"in", "in2", "end"}));
 }
 
-TEST(EvalMetrics, TagsPassedOverTurnInPlaceAndJump)
-{
+TEST(EvalMetrics, TagsPassedOverTurnInPlaceAndJump) {
     // A reader 0.1 m ahead sweeps a quarter circle while the robot turns.
     const std::vector<rfir::obs::TRFIDReader> readers{{"R", 0.1, 0, 0.03, 0.03}};
     const TPath2D turn{{0, CPose2D(0, 0, 0)}, {1, CPose2D(0, 0, M_PI / 2)}};
@@ -155,12 +145,12 @@ TEST(EvalMetrics, TagsPassedOverTurnInPlaceAndJump)
     // A 2 m jump in one step (kidnapping) is not interpolated.
     const TPath2D jump{{0, CPose2D(0, 0, 0)}, {1, CPose2D(2, 0, 0)}};
     const TMapFile line{tag("start", 0.1, 0), tag("mid", 1.1, 0), tag("end", 2.1, 0)};
-    EXPECT_EQ(tagsPassedOver(line, jump, readers), (std::set<std::string>{"start", "end"}));
+    EXPECT_EQ(tagsPassedOver(line, jump, readers),
+              (std::set<std::string>{"start", "end"}));
     EXPECT_THROW(tagsPassedOver(line, jump, {}), std::runtime_error);
 }
 
-TEST(EvalMetrics, LandmarksInView)
-{
+TEST(EvalMetrics, LandmarksInView) {
     rfir::obs::TRBSensor s;  // at the robot centre, 0.5 m, 120 deg
     const TPath2D path{{0, CPose2D(0, 0, 0)}};
     const TMapFile gt{tag("a", 0.4, 0.1, TMapEntry::Kind::Landmark),
@@ -177,8 +167,7 @@ TEST(EvalMetrics, LandmarksInView)
     EXPECT_EQ(*m.mappedOfPassedOver, 1u);
 }
 
-TEST(EvalMetrics, DeadReckoningAlignedAtStart)
-{
+TEST(EvalMetrics, DeadReckoningAlignedAtStart) {
     // Odometry frame rotated: starts at (5, 5, pi/2) and drives 1 m forward.
     const TPath2D odo{{0, CPose2D(5, 5, M_PI / 2)}, {1, CPose2D(5, 6, M_PI / 2)}};
     const TPath2D gt{{0, CPose2D(1, 2, 0)}, {1, CPose2D(2, 2, 0)}};
@@ -191,8 +180,7 @@ TEST(EvalMetrics, DeadReckoningAlignedAtStart)
     EXPECT_THROW(alignOdometryAtStart({{7, CPose2D()}}, gt), std::runtime_error);
 }
 
-TEST(EvalReport, JsonKeysAndTable)
-{
+TEST(EvalReport, JsonKeysAndTable) {
     TEvalResult r;
     r.label = "PF \"x\"";
     const TPath2D gt{{0, CPose2D(0, 0, 0)}, {1, CPose2D(1, 0, 0)}};
@@ -202,11 +190,12 @@ TEST(EvalReport, JsonKeysAndTable)
     std::string j = toJson(r);
     EXPECT_EQ(j.find('\n'), std::string::npos);
     for (const char* k :
-         {"\"label\":\"PF \\\"x\\\"\"", "\"robot\":{\"poses\":1,\"skipped\":0,\"mean_dx\":0.02",
-          "\"mean_dy\":0", "\"mean_dtheta\":0", "\"mean_dist\":0.02", "\"max_dx\":0.02",
+         {"\"label\":\"PF \\\"x\\\"\"",
+          "\"robot\":{\"poses\":1,\"skipped\":0,\"mean_dx\":0.02", "\"mean_dy\":0",
+          "\"mean_dtheta\":0", "\"mean_dist\":0.02", "\"max_dx\":0.02",
           "\"max_dy\":", "\"max_dtheta\":", "\"max_dist\":", "\"dead_reckoning\":{",
-          "\"tags\":{\"count\":1,\"mean_dx\":0.01", "\"tags_mapped\":1", "\"tags_total\":2",
-          "\"tags_unknown_ids\":0", "\"tags_passed_over\":null",
+          "\"tags\":{\"count\":1,\"mean_dx\":0.01", "\"tags_mapped\":1",
+          "\"tags_total\":2", "\"tags_unknown_ids\":0", "\"tags_passed_over\":null",
           "\"tags_mapped_of_passed_over\":null"})
         EXPECT_NE(j.find(k), std::string::npos) << k << " not in " << j;
     r.map->passedOver = 2;

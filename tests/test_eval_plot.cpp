@@ -8,47 +8,52 @@
 #include <filesystem>
 
 using namespace rfir::eval;
+using mrpt::poses::CPose2D;
 using rfir::common::TMapEntry;
 using rfir::common::TPath2D;
-using mrpt::poses::CPose2D;
 namespace fs = std::filesystem;
 
-namespace
-{
-struct TRGB
-{
+namespace {
+struct TRGB {
     int r, g, b;
 };
 /** Pixel of a loaded colour image (CImage stores BGR). */
-TRGB pixel(const mrpt::img::CImage& im, int x, int y)
-{
+TRGB pixel(const mrpt::img::CImage& im, int x, int y) {
     return {im.at<uint8_t>(x, y, 2), im.at<uint8_t>(x, y, 1), im.at<uint8_t>(x, y, 0)};
 }
 /** True if some pixel within `r` of (x, y) satisfies pred. */
 template <class P>
-bool near(const mrpt::img::CImage& im, double x, double y, int r, P pred)
-{
+bool near(const mrpt::img::CImage& im, double x, double y, int r, P pred) {
     for (int dy = -r; dy <= r; dy++)
         for (int dx = -r; dx <= r; dx++)
             if (pred(pixel(im, int(std::lround(x)) + dx, int(std::lround(y)) + dy)))
                 return true;
     return false;
 }
-bool isRed(TRGB c) { return c.r > 180 && c.g < 90 && c.b < 90; }
-bool isBlue(TRGB c) { return c.b > 150 && c.r < 60 && c.g < 140; }
-bool isPurple(TRGB c) { return c.r > 100 && c.b > 130 && c.g < 40; }
-bool isGreen(TRGB c) { return c.g > 120 && c.r < 60 && c.b < 60; }
-bool isWhite(TRGB c) { return c.r == 255 && c.g == 255 && c.b == 255; }
+bool isRed(TRGB c) {
+    return c.r > 180 && c.g < 90 && c.b < 90;
+}
+bool isBlue(TRGB c) {
+    return c.b > 150 && c.r < 60 && c.g < 140;
+}
+bool isPurple(TRGB c) {
+    return c.r > 100 && c.b > 130 && c.g < 40;
+}
+bool isGreen(TRGB c) {
+    return c.g > 120 && c.r < 60 && c.b < 60;
+}
+bool isWhite(TRGB c) {
+    return c.r == 255 && c.g == 255 && c.b == 255;
+}
 
-fs::path tempDir()
-{
-    const auto d = fs::temp_directory_path() / ("rfir_eval_plot_" + std::to_string(::getpid()));
+fs::path tempDir() {
+    const auto d =
+        fs::temp_directory_path() / ("rfir_eval_plot_" + std::to_string(::getpid()));
     fs::create_directories(d);
     return d;
 }
 
-TMapEntry entry(const std::string& id, double x, double y)
-{
+TMapEntry entry(const std::string& id, double x, double y) {
     TMapEntry e;
     e.id = id;
     e.x = x;
@@ -57,8 +62,7 @@ TMapEntry entry(const std::string& id, double x, double y)
 }
 }  // namespace
 
-TEST(EvalPlot, MapFigurePixelsAndFile)
-{
+TEST(EvalPlot, MapFigurePixelsAndFile) {
     TMapFigure f;
     f.title = "test figure";
     f.width = 800;
@@ -85,12 +89,13 @@ TEST(EvalPlot, MapFigurePixelsAndFile)
     ASSERT_EQ(back.getWidth(), 800u);
     ASSERT_EQ(back.getHeight(), 600u);
     ASSERT_TRUE(back.isColor());
-    EXPECT_TRUE(near(back, ax.px(1), ax.py(0), 1, isBlue));    // ground-truth path
-    EXPECT_TRUE(near(back, ax.px(1), ax.py(1), 1, isRed));     // estimated path
+    EXPECT_TRUE(near(back, ax.px(1), ax.py(0), 1, isBlue));          // ground-truth path
+    EXPECT_TRUE(near(back, ax.px(1), ax.py(1), 1, isRed));           // estimated path
     EXPECT_TRUE(near(back, ax.px(1.03), ax.py(0.53), 1, isPurple));  // true tag
     // Estimated tag: a green ring of radius 6 px, white inside.
     EXPECT_TRUE(near(back, ax.px(1.53) + 6, ax.py(0.53), 1, isGreen));
-    EXPECT_TRUE(isWhite(pixel(back, int(std::lround(ax.px(1.53))), int(std::lround(ax.py(0.53))))));
+    EXPECT_TRUE(isWhite(
+        pixel(back, int(std::lround(ax.px(1.53))), int(std::lround(ax.py(0.53))))));
     // Background away from the data and the grid stays white.
     EXPECT_TRUE(isWhite(pixel(back, int(ax.px(0.73)), int(ax.py(0.27)))));
     // No temporary file is left beside the output.
@@ -100,8 +105,7 @@ TEST(EvalPlot, MapFigurePixelsAndFile)
     fs::remove_all(dir);
 }
 
-TEST(EvalPlot, MapFigureFitsDataAspect)
-{
+TEST(EvalPlot, MapFigureFitsDataAspect) {
     TMapFigure f;
     f.width = 1000;
     f.height = 900;
@@ -111,15 +115,19 @@ TEST(EvalPlot, MapFigureFitsDataAspect)
     EXPECT_LT(img.getHeight(), 500u);  // wide data: the figure gets shorter
 }
 
-TEST(EvalPlot, LinePlotLogAxesAndMarkers)
-{
+TEST(EvalPlot, LinePlotLogAxesAndMarkers) {
     TLinePlot p;
     p.title = "time per update";
     p.xLabel = "robot particles";
     p.yLabel = "time [ms]";
     p.logX = p.logY = true;
     p.series.push_back({"PF-SLAM", {100, 1000, 5000}, {0.5, 5, 25}, {}, true, true});
-    p.series.push_back({"FastSLAM", {100, 1000, 5000}, {2, 20, 100}, mrpt::img::TColor(220, 30, 30), true, true});
+    p.series.push_back({"FastSLAM",
+                        {100, 1000, 5000},
+                        {2, 20, 100},
+                        mrpt::img::TColor(220, 30, 30),
+                        true,
+                        true});
     TPlotAxes ax;
     const auto img = renderLinePlot(p, &ax);
     EXPECT_EQ(img.getWidth(), 900u);
@@ -144,8 +152,7 @@ TEST(EvalPlot, LinePlotLogAxesAndMarkers)
     fs::remove_all(dir);
 }
 
-TEST(EvalPlot, LinePlotRejectsMismatchedSeries)
-{
+TEST(EvalPlot, LinePlotRejectsMismatchedSeries) {
     TLinePlot p;
     p.series.push_back({"bad", {1, 2}, {1}, {}, true, true});
     EXPECT_THROW(renderLinePlot(p), std::runtime_error);

@@ -5,25 +5,21 @@
 #include <map>
 #include <stdexcept>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
 using rfir::common::TMapEntry;
 using rfir::common::TPath2D;
 
-namespace
-{
+namespace {
 constexpr double kTimeTol = 1e-6;  // s: stamps written with 6 decimals in TUM
 }
 
-double wrapToPi(double a)
-{
+double wrapToPi(double a) {
     a = std::remainder(a, 2 * M_PI);  // [-pi, pi]
     if (a <= -M_PI) a += 2 * M_PI;
     return a;
 }
 
-std::optional<mrpt::poses::CPose2D> interpolatePose(const TPath2D& gt, double t)
-{
+std::optional<mrpt::poses::CPose2D> interpolatePose(const TPath2D& gt, double t) {
     if (gt.empty() || t < gt.front().t - kTimeTol || t > gt.back().t + kTimeTol)
         return std::nullopt;
     auto it = std::lower_bound(gt.begin(), gt.end(), t,
@@ -40,23 +36,20 @@ std::optional<mrpt::poses::CPose2D> interpolatePose(const TPath2D& gt, double t)
                                 wrapToPi(phi));
 }
 
-void checkPath(const TPath2D& p, const std::string& what)
-{
+void checkPath(const TPath2D& p, const std::string& what) {
     if (p.empty()) throw std::runtime_error(what + ": the path has no pose");
     for (size_t i = 1; i < p.size(); i++)
         if (p[i].t < p[i - 1].t)
-            throw std::runtime_error(what + ": poses are not in non-decreasing time (pose " +
-                                     std::to_string(i + 1) + " at t=" +
-                                     std::to_string(p[i].t) + " after t=" +
-                                     std::to_string(p[i - 1].t) + ")");
+            throw std::runtime_error(
+                what + ": poses are not in non-decreasing time (pose " +
+                std::to_string(i + 1) + " at t=" + std::to_string(p[i].t) +
+                " after t=" + std::to_string(p[i - 1].t) + ")");
 }
 
-TErrorStats statsOf(const std::vector<TPoseError>& errs)
-{
+TErrorStats statsOf(const std::vector<TPoseError>& errs) {
     TErrorStats s;
     s.count = errs.size();
-    for (const auto& e : errs)
-    {
+    for (const auto& e : errs) {
         const double ax = std::abs(e.dx), ay = std::abs(e.dy), at = std::abs(e.dtheta);
         s.mean_dx += ax;
         s.mean_dy += ay;
@@ -67,8 +60,7 @@ TErrorStats statsOf(const std::vector<TPoseError>& errs)
         s.max_dtheta = std::max(s.max_dtheta, at);
         s.max_dist = std::max(s.max_dist, e.dist);
     }
-    if (s.count)
-    {
+    if (s.count) {
         const double n = double(s.count);
         s.mean_dx /= n;
         s.mean_dy /= n;
@@ -78,16 +70,13 @@ TErrorStats statsOf(const std::vector<TPoseError>& errs)
     return s;
 }
 
-TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt)
-{
+TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt) {
     if (est.empty()) throw std::runtime_error("estimated path: the path has no pose");
     checkPath(gt, "ground-truth path");
     TRobotErrors r;
-    for (const auto& p : est)
-    {
+    for (const auto& p : est) {
         const auto g = interpolatePose(gt, p.t);
-        if (!g)
-        {
+        if (!g) {
             r.skipped++;
             continue;
         }
@@ -109,27 +98,24 @@ TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt)
     return r;
 }
 
-namespace
-{
-TMapEntry::Kind inferKind(const rfir::common::TMapFile& est)
-{
+namespace {
+TMapEntry::Kind inferKind(const rfir::common::TMapFile& est) {
     bool tag = false, lm = false;
-    for (const auto& e : est)
-    {
+    for (const auto& e : est) {
         tag |= e.kind == TMapEntry::Kind::Tag;
         lm |= e.kind == TMapEntry::Kind::Landmark;
     }
     if (tag && lm)
         throw std::runtime_error(
-            "the estimated map holds both tag and landmark records: say which to evaluate");
+            "the estimated map holds both tag and landmark records: say which to "
+            "evaluate");
     return lm ? TMapEntry::Kind::Landmark : TMapEntry::Kind::Tag;
 }
 }  // namespace
 
 TMapErrors computeMapErrors(const rfir::common::TMapFile& est,
                             const rfir::common::TMapFile& gt,
-                            std::optional<TMapEntry::Kind> kind)
-{
+                            std::optional<TMapEntry::Kind> kind) {
     TMapErrors m;
     m.kind = kind ? *kind : inferKind(est);
     std::map<std::string, const TMapEntry*> truth;
@@ -137,12 +123,10 @@ TMapErrors computeMapErrors(const rfir::common::TMapFile& est,
         if (g.kind == m.kind) truth[g.id] = &g;
     m.total = truth.size();
     std::vector<TPoseError> errs;
-    for (const auto& e : est)
-    {
+    for (const auto& e : est) {
         if (e.kind != m.kind) continue;
         const auto it = truth.find(e.id);
-        if (it == truth.end())
-        {
+        if (it == truth.end()) {
             m.unknownIds.push_back(e.id);
             continue;
         }
@@ -164,8 +148,7 @@ TMapErrors computeMapErrors(const rfir::common::TMapFile& est,
 }
 
 void setPassedOver(TMapErrors& m, const std::set<std::string>& passedIds,
-                   const rfir::common::TMapFile& est)
-{
+                   const rfir::common::TMapFile& est) {
     m.passedOver = passedIds.size();
     size_t n = 0;
     for (const auto& e : est)
@@ -173,8 +156,7 @@ void setPassedOver(TMapErrors& m, const std::set<std::string>& passedIds,
     m.mappedOfPassedOver = n;
 }
 
-TPath2D alignOdometryAtStart(const TPath2D& odometry, const TPath2D& gt)
-{
+TPath2D alignOdometryAtStart(const TPath2D& odometry, const TPath2D& gt) {
     checkPath(gt, "ground-truth path");
     size_t k = 0;
     std::optional<mrpt::poses::CPose2D> g0;

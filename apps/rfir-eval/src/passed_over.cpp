@@ -8,31 +8,26 @@
 #include <stdexcept>
 #include <unordered_map>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
+using mrpt::poses::CPose2D;
 using rfir::common::TMapEntry;
 using rfir::common::TPath2D;
-using mrpt::poses::CPose2D;
 
-namespace
-{
+namespace {
 /** Calls fn at every pose of the path and at interpolated poses in between,
  * so that a point at distance <= reach from the robot moves by at most `step`
  * between samples. Steps longer than maxGap are jumps: not interpolated. */
 void forEachSample(const TPath2D& path, double step, double reach, double maxGap,
-                   const std::function<void(const CPose2D&)>& fn)
-{
-    for (size_t i = 0; i < path.size(); i++)
-    {
+                   const std::function<void(const CPose2D&)>& fn) {
+    for (size_t i = 0; i < path.size(); i++) {
         const CPose2D& b = path[i].pose;
-        if (i > 0)
-        {
+        if (i > 0) {
             const CPose2D& a = path[i - 1].pose;
             const double d = std::hypot(b.x() - a.x(), b.y() - a.y());
             const double dphi = wrapToPi(b.phi() - a.phi());
-            const int n = d > maxGap ? 1 : int(std::ceil((d + reach * std::abs(dphi)) / step));
-            for (int k = 1; k < n; k++)
-            {
+            const int n =
+                d > maxGap ? 1 : int(std::ceil((d + reach * std::abs(dphi)) / step));
+            for (int k = 1; k < n; k++) {
                 const double s = double(k) / n;
                 fn(CPose2D(a.x() + s * (b.x() - a.x()), a.y() + s * (b.y() - a.y()),
                            wrapToPi(a.phi() + s * dphi)));
@@ -44,37 +39,35 @@ void forEachSample(const TPath2D& path, double step, double reach, double maxGap
 
 /** Uniform grid of landmark indices; cells of side >= the query radius, so a
  * query looks at the 3x3 cells around a point. */
-class CGrid
-{
-public:
-    CGrid(const std::vector<const TMapEntry*>& pts, double cell) : pts_(pts), cell_(cell)
-    {
+class CGrid {
+  public:
+    CGrid(const std::vector<const TMapEntry*>& pts, double cell)
+        : pts_(pts), cell_(cell) {
         for (size_t i = 0; i < pts.size(); i++)
             cells_[key(cellOf(pts[i]->x), cellOf(pts[i]->y))].push_back(i);
     }
     template <class F>
-    void near(double x, double y, F&& f) const
-    {
+    void near(double x, double y, F&& f) const {
         const long cx = cellOf(x), cy = cellOf(y);
         for (long i = cx - 1; i <= cx + 1; i++)
-            for (long j = cy - 1; j <= cy + 1; j++)
-            {
+            for (long j = cy - 1; j <= cy + 1; j++) {
                 const auto it = cells_.find(key(i, j));
                 if (it == cells_.end()) continue;
                 for (size_t k : it->second) f(*pts_[k]);
             }
     }
 
-private:
+  private:
     long cellOf(double v) const { return long(std::floor(v / cell_)); }
-    static long long key(long i, long j) { return (static_cast<long long>(i) << 32) ^ (j & 0xffffffffLL); }
+    static long long key(long i, long j) {
+        return (static_cast<long long>(i) << 32) ^ (j & 0xffffffffLL);
+    }
     std::vector<const TMapEntry*> pts_;
     double cell_;
     std::unordered_map<long long, std::vector<size_t>> cells_;
 };
 
-std::vector<const TMapEntry*> ofKind(const rfir::common::TMapFile& m, TMapEntry::Kind k)
-{
+std::vector<const TMapEntry*> ofKind(const rfir::common::TMapFile& m, TMapEntry::Kind k) {
     std::vector<const TMapEntry*> out;
     for (const auto& e : m)
         if (e.kind == k) out.push_back(&e);
@@ -82,16 +75,16 @@ std::vector<const TMapEntry*> ofKind(const rfir::common::TMapFile& m, TMapEntry:
 }
 }  // namespace
 
-std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt, const TPath2D& gtPath,
+std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt,
+                                     const TPath2D& gtPath,
                                      const std::vector<rfir::obs::TRFIDReader>& readers,
-                                     double maxGap)
-{
+                                     double maxGap) {
     if (readers.empty())
         throw std::runtime_error("passed-over tags: no RFID reader geometry is known");
     double reach = 0, minHalf = 1e9;
-    for (const auto& r : readers)
-    {
-        reach = std::max(reach, std::hypot(std::abs(r.x) + r.halfX, std::abs(r.y) + r.halfY));
+    for (const auto& r : readers) {
+        reach =
+            std::max(reach, std::hypot(std::abs(r.x) + r.halfX, std::abs(r.y) + r.halfY));
         minHalf = std::min({minHalf, r.halfX, r.halfY});
     }
     std::set<std::string> seen;
@@ -104,8 +97,7 @@ std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt, const TPa
             const double dx = tag.x - p.x(), dy = tag.y - p.y();
             const double lx = c * dx + s * dy, ly = -s * dx + c * dy;
             for (const auto& r : readers)
-                if (std::abs(lx - r.x) < r.halfX && std::abs(ly - r.y) < r.halfY)
-                {
+                if (std::abs(lx - r.x) < r.halfX && std::abs(ly - r.y) < r.halfY) {
                     seen.insert(tag.id);
                     return;
                 }
@@ -116,8 +108,7 @@ std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt, const TPa
 
 std::set<std::string> landmarksInView(const rfir::common::TMapFile& gt,
                                       const TPath2D& gtPath,
-                                      const rfir::obs::TRBSensor& sensor, double maxGap)
-{
+                                      const rfir::obs::TRBSensor& sensor, double maxGap) {
     if (!(sensor.maxRange > 0))
         throw std::runtime_error("landmarks in view: the sensor range must be > 0");
     const double reach = std::hypot(sensor.x, sensor.y) + sensor.maxRange;

@@ -7,14 +7,12 @@
 #include <utility>
 #include <vector>
 
-namespace rfir::eval::detail
-{
+namespace rfir::eval::detail {
 using mrpt::img::CImage;
 using mrpt::img::TColor;
 
 /** MRPT's bitmap fonts: name and cell size in pixels. */
-struct TFont
-{
+struct TFont {
     const char* name;
     int w, h;
 };
@@ -40,8 +38,7 @@ void polyline(CImage& img, const TPlotAxes& ax,
               bool dashed = false);
 
 /** Tick values and their labels. */
-struct TTicks
-{
+struct TTicks {
     std::vector<double> values;
     std::vector<std::string> labels;
 };
@@ -56,8 +53,7 @@ TTicks logTicks(double lo, double hi);
 void drawFrame(CImage& img, const TPlotAxes& ax, const TTicks& xt, const TTicks& yt,
                const std::string& xLabel, const std::string& yLabel);
 
-struct TLegendEntry
-{
+struct TLegendEntry {
     enum Style { Line, DashedLine, LineDot, Dot, Circle, Square };
     std::string label;
     TColor color;

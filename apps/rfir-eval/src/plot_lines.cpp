@@ -7,24 +7,22 @@
 #include <stdexcept>
 #include <tuple>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
 using namespace detail;
 
-namespace
-{
-bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0); }
+namespace {
+bool usable(double v, bool log) {
+    return std::isfinite(v) && (!log || v > 0);
+}
 
 /** Data range of one axis, padded (5 %, in log space for log axes). */
 std::pair<double, double> range(const TLinePlot& p, bool isX, std::optional<double> lo,
-                                std::optional<double> hi)
-{
+                                std::optional<double> hi) {
     const bool log = isX ? p.logX : p.logY;
     double a = std::numeric_limits<double>::infinity(), b = -a;
     for (const auto& s : p.series)
         for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); i++)
-            if (usable(s.x[i], p.logX) && usable(s.y[i], p.logY))
-            {
+            if (usable(s.x[i], p.logX) && usable(s.y[i], p.logY)) {
                 const double v = isX ? s.x[i] : s.y[i];
                 a = std::min(a, v), b = std::max(b, v);
             }
@@ -33,8 +31,7 @@ std::pair<double, double> range(const TLinePlot& p, bool isX, std::optional<doub
     auto g = [&](double v) { return log ? std::pow(10.0, v) : v; };
     const double dataMin = a, dataMax = b;
     double fa = f(a), fb = f(b);
-    if (fb - fa < 1e-12)
-    {
+    if (fb - fa < 1e-12) {
         const double w = log ? 0.5 : std::max(std::abs(fa) * 0.1, 0.5);
         fa -= w, fb += w;
     }
@@ -49,10 +46,8 @@ std::pair<double, double> range(const TLinePlot& p, bool isX, std::optional<doub
     return {a, b};
 }
 
-TTicks ticksFor(double a, double b, bool log, int pixels)
-{
-    if (log)
-    {
+TTicks ticksFor(double a, double b, bool log, int pixels) {
+    if (log) {
         TTicks t = logTicks(a, b);
         if (t.values.size() >= 2) return t;
     }
@@ -60,12 +55,10 @@ TTicks ticksFor(double a, double b, bool log, int pixels)
 }
 }  // namespace
 
-mrpt::img::CImage renderLinePlot(const TLinePlot& p, TPlotAxes* axesOut)
-{
+mrpt::img::CImage renderLinePlot(const TLinePlot& p, TPlotAxes* axesOut) {
     CImage img = blankCanvas(p.width, p.height);
     std::vector<TLegendEntry> legend;
-    for (size_t i = 0; i < p.series.size(); i++)
-    {
+    for (size_t i = 0; i < p.series.size(); i++) {
         const auto& s = p.series[i];
         if (s.x.size() != s.y.size())
             throw std::runtime_error("line plot: series '" + s.label +
@@ -91,20 +84,17 @@ mrpt::img::CImage renderLinePlot(const TLinePlot& p, TPlotAxes* axesOut)
         throw std::runtime_error("line plot: the image is too small");
     const TTicks xt = ticksFor(ax.x0, ax.x1, p.logX, ax.right - ax.left);
     drawFrame(img, ax, xt, yt, p.xLabel, p.yLabel);
-    for (size_t i = 0; i < p.series.size(); i++)
-    {
+    for (size_t i = 0; i < p.series.size(); i++) {
         const auto& s = p.series[i];
         const TColor c = s.color ? *s.color : paletteColor(i);
         std::vector<std::pair<double, double>> pts;
-        for (size_t k = 0; k < s.x.size(); k++)
-        {
+        for (size_t k = 0; k < s.x.size(); k++) {
             const bool ok = usable(s.x[k], p.logX) && usable(s.y[k], p.logY);
             pts.emplace_back(ok ? s.x[k] : NAN, ok ? s.y[k] : NAN);
         }
         if (s.line) polyline(img, ax, pts, c, 2);
         if (!s.markers) continue;
-        for (const auto& [x, y] : pts)
-        {
+        for (const auto& [x, y] : pts) {
             if (!std::isfinite(x + y)) continue;
             const double u = ax.px(x), v = ax.py(y);
             if (u >= ax.left && u <= ax.right && v >= ax.top && v <= ax.bottom)
@@ -120,8 +110,7 @@ mrpt::img::CImage renderLinePlot(const TLinePlot& p, TPlotAxes* axesOut)
     return img;
 }
 
-void plotLines(const std::string& pngPath, const TLinePlot& plot)
-{
+void plotLines(const std::string& pngPath, const TLinePlot& plot) {
     savePngAtomically(pngPath, renderLinePlot(plot));
 }
 

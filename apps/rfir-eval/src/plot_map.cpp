@@ -9,30 +9,25 @@
 #include <map>
 #include <stdexcept>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
 using namespace detail;
 using rfir::common::TMapEntry;
 
-namespace
-{
+namespace {
 const TColor kGtPath(0, 90, 200), kEstPath(220, 30, 30), kOdomPath(130, 130, 130),
-    kGtTag(128, 0, 160), kEstTag(0, 150, 0), kEllipse(120, 200, 120), kEmitter(240, 140, 0),
-    kLink(150, 150, 150);
+    kGtTag(128, 0, 160), kEstTag(0, 150, 0), kEllipse(120, 200, 120),
+    kEmitter(240, 140, 0), kLink(150, 150, 150);
 
-struct TBounds
-{
+struct TBounds {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
-    void add(double x, double y, double r = 0)
-    {
+    void add(double x, double y, double r = 0) {
         x0 = std::min(x0, x - r), x1 = std::max(x1, x + r);
         y0 = std::min(y0, y - r), y1 = std::max(y1, y + r);
     }
     bool empty() const { return !(x1 >= x0); }
 };
 
-TBounds dataBounds(const TMapFigure& f)
-{
+TBounds dataBounds(const TMapFigure& f) {
     TBounds b;
     auto addPath = [&](const rfir::common::TPath2D& p) {
         for (const auto& s : p) b.add(s.pose.x(), s.pose.y());
@@ -46,26 +41,28 @@ TBounds dataBounds(const TMapFigure& f)
     return b;
 }
 
-std::string entryNoun(const rfir::common::TMapFile& m)
-{
+std::string entryNoun(const rfir::common::TMapFile& m) {
     bool tag = false, lm = false;
-    for (const auto& e : m)
-    {
+    for (const auto& e : m) {
         tag |= e.kind == TMapEntry::Kind::Tag;
         lm |= e.kind == TMapEntry::Kind::Landmark;
     }
     return tag && lm ? "tags/landmarks" : lm ? "landmarks" : "tags";
 }
 
-std::vector<TLegendEntry> legendOf(const TMapFigure& f)
-{
+std::vector<TLegendEntry> legendOf(const TMapFigure& f) {
     std::vector<TLegendEntry> l;
     if (f.gtPath) l.push_back({f.gtPathLabel, kGtPath, TLegendEntry::Line});
     if (f.estPath) l.push_back({f.estPathLabel, kEstPath, TLegendEntry::Line});
     if (f.odomPath) l.push_back({f.odomPathLabel, kOdomPath, TLegendEntry::DashedLine});
-    for (const auto& p : f.extraPaths) l.push_back({p.label, p.color, TLegendEntry::Line});
-    const auto notEmitter = [](const TMapEntry& e) { return e.kind != TMapEntry::Kind::Emitter; };
-    const auto isEmitter = [](const TMapEntry& e) { return e.kind == TMapEntry::Kind::Emitter; };
+    for (const auto& p : f.extraPaths)
+        l.push_back({p.label, p.color, TLegendEntry::Line});
+    const auto notEmitter = [](const TMapEntry& e) {
+        return e.kind != TMapEntry::Kind::Emitter;
+    };
+    const auto isEmitter = [](const TMapEntry& e) {
+        return e.kind == TMapEntry::Kind::Emitter;
+    };
     if (std::any_of(f.gtMap.begin(), f.gtMap.end(), notEmitter))
         l.push_back({"true " + entryNoun(f.gtMap), kGtTag, TLegendEntry::Dot});
     if (std::any_of(f.estMap.begin(), f.estMap.end(), notEmitter))
@@ -80,8 +77,8 @@ std::vector<TLegendEntry> legendOf(const TMapFigure& f)
 }
 
 /** Equal-aspect axes filling the plot area, centred on the data. */
-TPlotAxes fitAxes(const TBounds& b, double margin, int left, int top, int right, int bottom)
-{
+TPlotAxes fitAxes(const TBounds& b, double margin, int left, int top, int right,
+                  int bottom) {
     TPlotAxes ax;
     ax.left = left, ax.top = top, ax.right = right, ax.bottom = bottom;
     const double rx = std::max(b.x1 - b.x0 + 2 * margin, 0.05);
@@ -93,30 +90,25 @@ TPlotAxes fitAxes(const TBounds& b, double margin, int left, int top, int right,
     return ax;
 }
 
-std::vector<std::pair<double, double>> xy(const rfir::common::TPath2D& p)
-{
+std::vector<std::pair<double, double>> xy(const rfir::common::TPath2D& p) {
     std::vector<std::pair<double, double>> v;
     v.reserve(p.size());
     for (const auto& s : p) v.emplace_back(s.pose.x(), s.pose.y());
     return v;
 }
 
-bool inside(const TPlotAxes& ax, double x, double y)
-{
+bool inside(const TPlotAxes& ax, double x, double y) {
     return x >= ax.left && x <= ax.right && y >= ax.top && y <= ax.bottom;
 }
 
-void drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f)
-{
+void drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
     const double s = (ax.right - ax.left) / (ax.x1 - ax.x0);
     std::map<std::pair<int, std::string>, const TMapEntry*> truth;
     for (const auto& g : f.gtMap) truth[{int(g.kind), g.id}] = &g;
-    for (const auto& e : f.estMap)
-    {
+    for (const auto& e : f.estMap) {
         const double x = ax.px(e.x), y = ax.py(e.y);
         if (!inside(ax, x, y) || e.kind == TMapEntry::Kind::Emitter) continue;
-        if (f.showEllipses && e.sx && e.sy && (*e.sx * s >= 1 || *e.sy * s >= 1))
-        {
+        if (f.showEllipses && e.sx && e.sy && (*e.sx * s >= 1 || *e.sy * s >= 1)) {
             mrpt::math::CMatrixFixed<double, 2, 2> cov;
             cov(0, 0) = std::pow(std::max(*e.sx * s, 0.5), 2);
             cov(1, 1) = std::pow(std::max(*e.sy * s, 0.5), 2);
@@ -132,25 +124,20 @@ void drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f)
     }
 }
 
-void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f)
-{
-    for (const auto& e : f.gtMap)
-    {
+void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
+    for (const auto& e : f.gtMap) {
         const int x = int(std::lround(ax.px(e.x))), y = int(std::lround(ax.py(e.y)));
         if (!inside(ax, x, y)) continue;
-        if (e.kind == TMapEntry::Kind::Emitter)
-        {
+        if (e.kind == TMapEntry::Kind::Emitter) {
             img.filledRectangle(x - 5, y - 5, x + 5, y + 5, kEmitter);
             if (f.showIds) text(img, x + 7, y - 14, e.id, TColor(150, 80, 0), kSmall);
-        }
-        else
+        } else
             fillDisc(img, x, y, 3, kGtTag);
     }
 }
 }  // namespace
 
-mrpt::img::CImage renderMapFigure(const TMapFigure& f, TPlotAxes* axesOut)
-{
+mrpt::img::CImage renderMapFigure(const TMapFigure& f, TPlotAxes* axesOut) {
     const auto legend = legendOf(f);
     const int legendW = legend.empty() ? 0 : legendWidth(legend) + 24;
     const int legendH = int(legend.size()) * 20 + 12;
@@ -160,8 +147,7 @@ mrpt::img::CImage renderMapFigure(const TMapFigure& f, TPlotAxes* axesOut)
     if (w - marginR - left < 100 || h - marginB - top < 100)
         throw std::runtime_error("map figure: the image is too small for its legend");
     const TBounds b = dataBounds(f);
-    if (f.fitToData)
-    {
+    if (f.fitToData) {
         // Equal aspect: give back the unused width or height of the image.
         const double rx = std::max(b.x1 - b.x0 + 2 * f.marginMetres, 0.05);
         const double ry = std::max(b.y1 - b.y0 + 2 * f.marginMetres, 0.05);
@@ -186,13 +172,13 @@ mrpt::img::CImage renderMapFigure(const TMapFigure& f, TPlotAxes* axesOut)
     img.rectangle(ax.left, ax.top, ax.right, ax.bottom, TColor(60, 60, 60), 1);
     drawLegend(img, right + 14, top, legend);
     if (!f.title.empty())
-        text(img, (left + right) / 2, 12, f.title, TColor(0, 0, 0), kLarge, Align::Center);
+        text(img, (left + right) / 2, 12, f.title, TColor(0, 0, 0), kLarge,
+             Align::Center);
     if (axesOut) *axesOut = ax;
     return img;
 }
 
-void plotMapFigure(const std::string& pngPath, const TMapFigure& fig)
-{
+void plotMapFigure(const std::string& pngPath, const TMapFigure& fig) {
     savePngAtomically(pngPath, renderMapFigure(fig));
 }
 

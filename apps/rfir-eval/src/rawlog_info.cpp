@@ -3,10 +3,8 @@
 
 #include <map>
 
-namespace rfir::eval
-{
-TRawlogInfo readRawlogInfo(const std::string& rawlogPath)
-{
+namespace rfir::eval {
+TRawlogInfo readRawlogInfo(const std::string& rawlogPath) {
     rfir::common::CRawlogReader rd(rawlogPath);
     TRawlogInfo info;
     info.readers = rd.header().readers;
@@ -16,17 +14,16 @@ TRawlogInfo readRawlogInfo(const std::string& rawlogPath)
     rfir::common::TPath2D absolute, accumulated;
     mrpt::poses::CPose2D acc;
     rfir::common::TRawlogStep st;
-    while (rd.next(st))
-    {
+    while (rd.next(st)) {
         info.steps++;
         if (st.odometry) absolute.push_back({st.t, *st.odometry});
-        if (st.odometryIncrement)
-        {
+        if (st.odometryIncrement) {
             acc = acc + *st.odometryIncrement;
             accumulated.push_back({st.t, acc});
         }
         if (!readersFromHeader && st.rfid)
-            for (const auto& r : st.rfid->readings) seenReaders.emplace(r.reader.id, r.reader);
+            for (const auto& r : st.rfid->readings)
+                seenReaders.emplace(r.reader.id, r.reader);
     }
     for (const auto& [id, r] : seenReaders) info.readers.push_back(r);
     info.odometry = absolute.empty() ? accumulated : absolute;

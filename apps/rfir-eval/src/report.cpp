@@ -5,32 +5,29 @@
 #include <cstdio>
 #include <sstream>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
 using rfir::common::TMapEntry;
 
-const char* pluralKey(TMapEntry::Kind k)
-{
-    switch (k)
-    {
-        case TMapEntry::Kind::Tag: return "tags";
-        case TMapEntry::Kind::Emitter: return "emitters";
-        default: return "landmarks";
+const char* pluralKey(TMapEntry::Kind k) {
+    switch (k) {
+        case TMapEntry::Kind::Tag:
+            return "tags";
+        case TMapEntry::Kind::Emitter:
+            return "emitters";
+        default:
+            return "landmarks";
     }
 }
 
-namespace
-{
-std::string fmt(double v, int decimals)
-{
+namespace {
+std::string fmt(double v, int decimals) {
     char b[64];
     std::snprintf(b, sizeof(b), "%.*f", decimals, v);
     return b;
 }
 
 /** Display width of a UTF-8 string (code points; the table uses no wide glyphs). */
-size_t displayWidth(const std::string& s)
-{
+size_t displayWidth(const std::string& s) {
     size_t n = 0;
     for (unsigned char c : s)
         if ((c & 0xC0) != 0x80) n++;
@@ -38,21 +35,17 @@ size_t displayWidth(const std::string& s)
 }
 
 /** Left-aligned first column, right-aligned others, two spaces between. */
-std::string renderTable(const std::vector<std::vector<std::string>>& rows)
-{
+std::string renderTable(const std::vector<std::vector<std::string>>& rows) {
     std::vector<size_t> w;
     for (const auto& r : rows)
-        for (size_t i = 0; i < r.size(); i++)
-        {
+        for (size_t i = 0; i < r.size(); i++) {
             if (w.size() <= i) w.push_back(0);
             w[i] = std::max(w[i], displayWidth(r[i]));
         }
     std::ostringstream o;
-    for (const auto& r : rows)
-    {
+    for (const auto& r : rows) {
         std::string line;
-        for (size_t i = 0; i < r.size(); i++)
-        {
+        for (size_t i = 0; i < r.size(); i++) {
             const std::string pad(w[i] - displayWidth(r[i]), ' ');
             line += i == 0 ? r[i] + pad : "  " + pad + r[i];
         }
@@ -63,44 +56,37 @@ std::string renderTable(const std::vector<std::vector<std::string>>& rows)
 }
 
 std::vector<std::string> robotCells(const std::string& label, const TRobotErrors& e,
-                                    bool showMax)
-{
+                                    bool showMax) {
     const auto& s = e.stats;
-    std::vector<std::string> c{label,
-                               fmt(1e3 * s.mean_dx, 1),
-                               fmt(1e3 * s.mean_dy, 1),
-                               fmt(s.mean_dtheta, 3),
-                               fmt(1e3 * s.mean_dist, 1)};
+    std::vector<std::string> c{label, fmt(1e3 * s.mean_dx, 1), fmt(1e3 * s.mean_dy, 1),
+                               fmt(s.mean_dtheta, 3), fmt(1e3 * s.mean_dist, 1)};
     if (showMax)
-        for (auto v : {fmt(1e3 * s.max_dx, 1), fmt(1e3 * s.max_dy, 1), fmt(s.max_dtheta, 3),
-                       fmt(1e3 * s.max_dist, 1)})
+        for (auto v : {fmt(1e3 * s.max_dx, 1), fmt(1e3 * s.max_dy, 1),
+                       fmt(s.max_dtheta, 3), fmt(1e3 * s.max_dist, 1)})
             c.push_back(v);
     c.push_back(std::to_string(s.count));
     return c;
 }
 
-std::string robotTable(const std::vector<TEvalResult>& rows, bool showMax)
-{
+std::string robotTable(const std::vector<TEvalResult>& rows, bool showMax) {
     std::vector<std::vector<std::string>> t;
     std::vector<std::string> h2{"method", "x [mm]", "y [mm]", "θ [rad]", "dr [mm]"};
-    if (showMax)
-    {
+    if (showMax) {
         h2.insert(h2.end(), {"x [mm]", "y [mm]", "θ [rad]", "dr [mm]"});
     }
     h2.push_back("poses");
     t.push_back(h2);
-    for (const auto& r : rows)
-    {
+    for (const auto& r : rows) {
         if (r.robot) t.push_back(robotCells(r.label, *r.robot, showMax));
-        if (r.odometry) t.push_back(robotCells(r.label + " odometry", *r.odometry, showMax));
+        if (r.odometry)
+            t.push_back(robotCells(r.label + " odometry", *r.odometry, showMax));
     }
     std::string out = "Robot localization (mean";
     out += showMax ? ", then max)\n" : ")\n";
     return out + renderTable(t);
 }
 
-std::string mapTable(const std::vector<TEvalResult>& rows, bool showMax)
-{
+std::string mapTable(const std::vector<TEvalResult>& rows, bool showMax) {
     TMapEntry::Kind kind = TMapEntry::Kind::Tag;
     for (const auto& r : rows)
         if (r.map) kind = r.map->kind;
@@ -110,12 +96,11 @@ std::string mapTable(const std::vector<TEvalResult>& rows, bool showMax)
     if (showMax) h.insert(h.end(), {"x [mm]", "y [mm]", "dt [mm]"});
     h.insert(h.end(), {"mapped", tags ? "passed over" : "in view", "total"});
     t.push_back(h);
-    for (const auto& r : rows)
-    {
+    for (const auto& r : rows) {
         if (!r.map) continue;
         const auto& s = r.map->stats;
-        std::vector<std::string> c{r.label, fmt(1e3 * s.mean_dx, 1), fmt(1e3 * s.mean_dy, 1),
-                                   fmt(1e3 * s.mean_dist, 1)};
+        std::vector<std::string> c{r.label, fmt(1e3 * s.mean_dx, 1),
+                                   fmt(1e3 * s.mean_dy, 1), fmt(1e3 * s.mean_dist, 1)};
         if (showMax)
             c.insert(c.end(), {fmt(1e3 * s.max_dx, 1), fmt(1e3 * s.max_dy, 1),
                                fmt(1e3 * s.max_dist, 1)});
@@ -130,11 +115,10 @@ std::string mapTable(const std::vector<TEvalResult>& rows, bool showMax)
 }
 }  // namespace
 
-std::string formatErrorTable(const std::vector<TEvalResult>& rows, const TTableOptions& opts)
-{
+std::string formatErrorTable(const std::vector<TEvalResult>& rows,
+                             const TTableOptions& opts) {
     bool anyRobot = false, anyMap = false;
-    for (const auto& r : rows)
-    {
+    for (const auto& r : rows) {
         anyRobot |= r.robot.has_value() || r.odometry.has_value();
         anyMap |= r.map.has_value();
     }
@@ -145,48 +129,43 @@ std::string formatErrorTable(const std::vector<TEvalResult>& rows, const TTableO
     return out;
 }
 
-namespace
-{
-std::string jsonString(const std::string& s)
-{
+namespace {
+std::string jsonString(const std::string& s) {
     std::string o = "\"";
-    for (unsigned char c : s)
-    {
-        if (c == '"' || c == '\\') o += '\\', o += char(c);
-        else if (c < 0x20)
-        {
+    for (unsigned char c : s) {
+        if (c == '"' || c == '\\')
+            o += '\\', o += char(c);
+        else if (c < 0x20) {
             char b[8];
             std::snprintf(b, sizeof(b), "\\u%04x", c);
             o += b;
-        }
-        else o += char(c);
+        } else
+            o += char(c);
     }
     return o + "\"";
 }
 
-std::string jsonNum(double v)
-{
+std::string jsonNum(double v) {
     if (!std::isfinite(v)) return "null";
     char b[64];
     std::snprintf(b, sizeof(b), "%.9g", v);
     return b;
 }
 
-std::string robotJson(const TRobotErrors& e)
-{
+std::string robotJson(const TRobotErrors& e) {
     const auto& s = e.stats;
     std::ostringstream o;
     o << "{\"poses\":" << s.count << ",\"skipped\":" << e.skipped
       << ",\"mean_dx\":" << jsonNum(s.mean_dx) << ",\"mean_dy\":" << jsonNum(s.mean_dy)
       << ",\"mean_dtheta\":" << jsonNum(s.mean_dtheta)
       << ",\"mean_dist\":" << jsonNum(s.mean_dist) << ",\"max_dx\":" << jsonNum(s.max_dx)
-      << ",\"max_dy\":" << jsonNum(s.max_dy) << ",\"max_dtheta\":" << jsonNum(s.max_dtheta)
+      << ",\"max_dy\":" << jsonNum(s.max_dy)
+      << ",\"max_dtheta\":" << jsonNum(s.max_dtheta)
       << ",\"max_dist\":" << jsonNum(s.max_dist) << "}";
     return o.str();
 }
 
-std::string mapJson(const TMapErrors& m)
-{
+std::string mapJson(const TMapErrors& m) {
     const auto& s = m.stats;
     const std::string p = pluralKey(m.kind);
     auto opt = [](const std::optional<size_t>& v) {
@@ -194,9 +173,10 @@ std::string mapJson(const TMapErrors& m)
     };
     std::ostringstream o;
     o << "\"" << p << "\":{\"count\":" << s.count << ",\"mean_dx\":" << jsonNum(s.mean_dx)
-      << ",\"mean_dy\":" << jsonNum(s.mean_dy) << ",\"mean_dist\":" << jsonNum(s.mean_dist)
-      << ",\"max_dx\":" << jsonNum(s.max_dx) << ",\"max_dy\":" << jsonNum(s.max_dy)
-      << ",\"max_dist\":" << jsonNum(s.max_dist) << "}";
+      << ",\"mean_dy\":" << jsonNum(s.mean_dy)
+      << ",\"mean_dist\":" << jsonNum(s.mean_dist) << ",\"max_dx\":" << jsonNum(s.max_dx)
+      << ",\"max_dy\":" << jsonNum(s.max_dy) << ",\"max_dist\":" << jsonNum(s.max_dist)
+      << "}";
     o << ",\"" << p << "_mapped\":" << m.mapped << ",\"" << p << "_total\":" << m.total
       << ",\"" << p << "_unknown_ids\":" << m.unknownIds.size() << ",\"" << p
       << "_passed_over\":" << opt(m.passedOver) << ",\"" << p
@@ -205,8 +185,7 @@ std::string mapJson(const TMapErrors& m)
 }
 }  // namespace
 
-std::string toJson(const TEvalResult& r)
-{
+std::string toJson(const TEvalResult& r) {
     std::string o = "{\"label\":" + jsonString(r.label);
     if (r.robot) o += ",\"robot\":" + robotJson(*r.robot);
     if (r.odometry) o += ",\"dead_reckoning\":" + robotJson(*r.odometry);

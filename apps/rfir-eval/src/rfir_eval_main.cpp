@@ -10,25 +10,36 @@
 #include <iostream>
 #include <stdexcept>
 
-namespace
-{
+namespace {
 using namespace rfir::eval;
 using rfir::common::TMapEntry;
 
-struct TArgs
-{
+struct TArgs {
     std::string path, gtPath, map, gtMap, rawlog, label, plot, title, jsonFile, kind;
     bool jsonOnly = false, noOdometry = false, ids = false;
 };
 
+/** Option combinations TCLAP cannot express. */
+void validate(const TArgs& a) {
+    if (!a.path.empty() && a.gtPath.empty())
+        throw std::invalid_argument("--path needs --gt-path (the ground-truth path)");
+    if (!a.map.empty() && a.gtMap.empty())
+        throw std::invalid_argument("--map needs --gt-map (the ground-truth map)");
+    if (a.path.empty() && a.map.empty())
+        throw std::invalid_argument(
+            "nothing to evaluate: give --path/--gt-path and/or "
+            "--map/--gt-map (see --help)");
+    if (!a.kind.empty() && a.kind != "tag" && a.kind != "landmark")
+        throw std::invalid_argument("--kind must be 'tag' or 'landmark', not '" + a.kind +
+                                    "'");
+}
+
 /** Thrown to end the program with a given code, output already printed. */
-struct TExit
-{
+struct TExit {
     int code;
 };
 
-TArgs parse(int argc, char** argv)
-{
+TArgs parse(int argc, char** argv) {
     TCLAP::CmdLine cmd(
         "Compares an estimated robot path (TUM) and landmark map with the ground truth: "
         "mean and max of |dx|, |dy|, |dtheta| and distance (the seeds' tables), mapped "
@@ -36,18 +47,21 @@ TArgs parse(int argc, char** argv)
         ' ', "0.1");
     TCLAP::ValueArg<std::string> path("", "path", "estimated robot path (TUM)", false, "",
                                       "EST.tum", cmd);
-    TCLAP::ValueArg<std::string> gtPath("", "gt-path", "ground-truth path (TUM)", false, "",
-                                        "GT.tum", cmd);
+    TCLAP::ValueArg<std::string> gtPath("", "gt-path", "ground-truth path (TUM)", false,
+                                        "", "GT.tum", cmd);
     TCLAP::ValueArg<std::string> map("", "map", "estimated map (tag/landmark records)",
                                      false, "", "EST_MAP", cmd);
     TCLAP::ValueArg<std::string> gtMap("", "gt-map", "ground-truth map", false, "",
                                        "GT_MAP", cmd);
-    TCLAP::ValueArg<std::string> kind("", "kind", "map records to evaluate: tag or "
+    TCLAP::ValueArg<std::string> kind("", "kind",
+                                      "map records to evaluate: tag or "
                                       "landmark (default: those of the estimated map)",
                                       false, "", "tag|landmark", cmd);
     TCLAP::ValueArg<std::string> rawlog(
-        "", "rawlog", "the rawlog of the run: reader / sensor geometry for the "
-        "passed-over count, odometry for the dead-reckoning row", false, "", "FILE", cmd);
+        "", "rawlog",
+        "the rawlog of the run: reader / sensor geometry for the "
+        "passed-over count, odometry for the dead-reckoning row",
+        false, "", "FILE", cmd);
     TCLAP::SwitchArg noOdom("", "no-odometry", "no dead-reckoning row", cmd);
     TCLAP::ValueArg<std::string> label("", "label", "method name in the table and JSON",
                                        false, "estimate", "NAME", cmd);
@@ -56,15 +70,15 @@ TArgs parse(int argc, char** argv)
     TCLAP::ValueArg<std::string> title("", "title", "figure title (default: the label)",
                                        false, "", "TEXT", cmd);
     TCLAP::SwitchArg ids("", "ids", "write landmark IDs on the figure", cmd);
-    TCLAP::ValueArg<std::string> jsonFile("", "json-file", "also write the JSON line to "
-                                          "FILE (atomically)", false, "", "FILE", cmd);
+    TCLAP::ValueArg<std::string> jsonFile("", "json-file",
+                                          "also write the JSON line to "
+                                          "FILE (atomically)",
+                                          false, "", "FILE", cmd);
     TCLAP::SwitchArg jsonOnly("", "json-only", "print only the JSON line", cmd);
-    if (!cmd.parse(argc, argv))
-    {
+    if (!cmd.parse(argc, argv)) {
         // MRPT's TCLAP returns false both after --help/--version and after
         // printing a usage error.
-        for (int i = 1; i < argc; i++)
-        {
+        for (int i = 1; i < argc; i++) {
             const std::string s = argv[i];
             if (s == "-h" || s == "--help" || s == "--version") throw TExit{0};
         }
@@ -73,53 +87,42 @@ TArgs parse(int argc, char** argv)
     TArgs a;
     a.path = path.getValue(), a.gtPath = gtPath.getValue(), a.map = map.getValue();
     a.gtMap = gtMap.getValue(), a.rawlog = rawlog.getValue(), a.label = label.getValue();
-    a.plot = plot.getValue(), a.title = title.getValue(), a.jsonFile = jsonFile.getValue();
+    a.plot = plot.getValue(), a.title = title.getValue(),
+    a.jsonFile = jsonFile.getValue();
     a.kind = kind.getValue(), a.jsonOnly = jsonOnly.getValue();
     a.noOdometry = noOdom.getValue(), a.ids = ids.getValue();
-    if (!a.path.empty() && a.gtPath.empty())
-        throw std::invalid_argument("--path needs --gt-path (the ground-truth path)");
-    if (!a.map.empty() && a.gtMap.empty())
-        throw std::invalid_argument("--map needs --gt-map (the ground-truth map)");
-    if (a.path.empty() && a.map.empty())
-        throw std::invalid_argument("nothing to evaluate: give --path/--gt-path and/or "
-                                    "--map/--gt-map (see --help)");
-    if (!a.kind.empty() && a.kind != "tag" && a.kind != "landmark")
-        throw std::invalid_argument("--kind must be 'tag' or 'landmark', not '" + a.kind +
-                                    "'");
+    validate(a);
     return a;
 }
 
 /** Passed-over / in-view landmarks, when the sensor geometry is known. */
 void addPassedOver(TMapErrors& m, const rfir::common::TMapFile& est,
                    const rfir::common::TMapFile& gt, const rfir::common::TPath2D& gtPath,
-                   const TRawlogInfo& info)
-{
+                   const TRawlogInfo& info) {
     if (m.kind == TMapEntry::Kind::Tag && !info.readers.empty())
         setPassedOver(m, tagsPassedOver(gt, gtPath, info.readers), est);
     else if (m.kind == TMapEntry::Kind::Landmark && info.rbSensor)
         setPassedOver(m, landmarksInView(gt, gtPath, *info.rbSensor), est);
     else
         std::cerr << "warning: the rawlog declares no "
-                  << (m.kind == TMapEntry::Kind::Tag ? "RFID reader" : "range-bearing sensor")
+                  << (m.kind == TMapEntry::Kind::Tag ? "RFID reader"
+                                                     : "range-bearing sensor")
                   << ": no passed-over count\n";
 }
 
-int run(const TArgs& a)
-{
+int run(const TArgs& a) {
     TEvalResult r;
     r.label = a.label;
     TMapFigure fig;
     fig.title = a.title.empty() ? a.label : a.title;
     fig.showIds = a.ids;
     rfir::common::TPath2D gt;
-    if (!a.gtPath.empty())
-    {
+    if (!a.gtPath.empty()) {
         gt = rfir::common::loadTUM(a.gtPath);
         checkPath(gt, a.gtPath);
         fig.gtPath = gt;
     }
-    if (!a.path.empty())
-    {
+    if (!a.path.empty()) {
         const auto est = rfir::common::loadTUM(a.path);
         if (est.empty()) throw std::runtime_error(a.path + ": the path has no pose");
         r.robot = computeRobotErrors(est, gt);
@@ -128,15 +131,13 @@ int run(const TArgs& a)
     }
     std::optional<TRawlogInfo> info;
     if (!a.rawlog.empty()) info = readRawlogInfo(a.rawlog);
-    if (info && !gt.empty() && !a.noOdometry && !info->odometry.empty())
-    {
+    if (info && !gt.empty() && !a.noOdometry && !info->odometry.empty()) {
         const auto dr = alignOdometryAtStart(info->odometry, gt);
         r.odometry = computeRobotErrors(dr, gt);
         fig.odomPath = dr;
     }
     if (!a.gtMap.empty()) fig.gtMap = rfir::common::loadMapFile(a.gtMap);
-    if (!a.map.empty())
-    {
+    if (!a.map.empty()) {
         fig.estMap = rfir::common::loadMapFile(a.map);
         std::optional<TMapEntry::Kind> k;
         if (!a.kind.empty())
@@ -149,29 +150,21 @@ int run(const TArgs& a)
     std::cout << json << std::endl;
     if (!a.jsonFile.empty())
         rfir::common::writeFileAtomically(a.jsonFile,
-                                           [&](std::ostream& o) { o << json << "\n"; });
+                                          [&](std::ostream& o) { o << json << "\n"; });
     if (!a.plot.empty()) plotMapFigure(a.plot, fig);
     return 0;
 }
 }  // namespace
 
-int main(int argc, char** argv)
-{
-    try
-    {
+int main(int argc, char** argv) {
+    try {
         return run(parse(argc, argv));
-    }
-    catch (const TExit& e)
-    {
+    } catch (const TExit& e) {
         return e.code;
-    }
-    catch (const TCLAP::ArgException& e)
-    {
+    } catch (const TCLAP::ArgException& e) {
         std::cerr << "rfir-eval: error: " << e.error() << " for " << e.argId() << "\n";
         return 2;
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         std::cerr << "rfir-eval: error: " << e.what() << "\n";
         return 1;
     }

@@ -15,27 +15,23 @@
 #include <string>
 #include <vector>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
 /** Mean and max of the absolute errors. For maps, dtheta is unused (0). */
-struct TErrorStats
-{
+struct TErrorStats {
     size_t count = 0;  //!< number of evaluated items (poses or landmarks)
     double mean_dx = 0, mean_dy = 0, mean_dtheta = 0, mean_dist = 0;
     double max_dx = 0, max_dy = 0, max_dtheta = 0, max_dist = 0;
 };
 
 /** Error of one estimated pose against the ground truth at the same time. */
-struct TPoseError
-{
+struct TPoseError {
     double t = 0;
     double dx = 0, dy = 0;  //!< estimate minus truth, world frame (signed)
     double dtheta = 0;      //!< estimate minus truth, wrapped to (-pi, pi]
     double dist = 0;        //!< hypot(dx, dy)
 };
 
-struct TRobotErrors
-{
+struct TRobotErrors {
     TErrorStats stats;
     std::vector<TPoseError> perPose;  //!< in the estimated path's order
     /** Estimated poses outside the ground truth's time span (not evaluated). */
@@ -43,14 +39,12 @@ struct TRobotErrors
 };
 
 /** Error of one mapped landmark against its true position. */
-struct TLandmarkError
-{
+struct TLandmarkError {
     std::string id;
     double dx = 0, dy = 0, dist = 0;  //!< estimate minus truth (signed dx, dy)
 };
 
-struct TMapErrors
-{
+struct TMapErrors {
     rfir::common::TMapEntry::Kind kind = rfir::common::TMapEntry::Kind::Tag;
     TErrorStats stats;  //!< over the mapped landmarks whose ID is in the truth
     std::vector<TLandmarkError> perLandmark;
@@ -124,8 +118,7 @@ void setPassedOver(TMapErrors& m, const std::set<std::string>& passedIds,
 
 /** What the evaluation needs from a rawlog: the sensor geometry and the
  * odometry path. */
-struct TRawlogInfo
-{
+struct TRawlogInfo {
     /** Reader geometry: the log header's, or (logs without it) the union of
      * the readers seen in the RFID observations. */
     std::vector<rfir::obs::TRFIDReader> readers;

@@ -13,11 +13,9 @@
 #include <string>
 #include <vector>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
 /** Linear world <-> pixel mapping of a drawn plot area (y up in the world). */
-struct TPlotAxes
-{
+struct TPlotAxes {
     int left = 0, top = 0, right = 0, bottom = 0;  //!< plot area, pixels
     double x0 = 0, x1 = 1, y0 = 0, y1 = 1;         //!< data range shown
     bool logX = false, logY = false;
@@ -27,8 +25,7 @@ struct TPlotAxes
 };
 
 /** One extra path drawn in a map figure. */
-struct TPlotPath
-{
+struct TPlotPath {
     std::string label;
     rfir::common::TPath2D path;
     mrpt::img::TColor color{0, 0, 0};
@@ -39,8 +36,7 @@ struct TPlotPath
  * estimated path red, odometry grey; ground-truth tags/landmarks purple dots,
  * estimated ones green circles (with 2-sigma ellipses from sx, sy); emitters
  * orange squares. Entries of the maps of every kind are drawn. */
-struct TMapFigure
-{
+struct TMapFigure {
     std::string title;
     std::optional<rfir::common::TPath2D> gtPath, estPath, odomPath;
     rfir::common::TMapFile gtMap, estMap;
@@ -60,8 +56,7 @@ struct TMapFigure
 };
 
 /** One series of a line plot. NaN points break the line. */
-struct TSeries
-{
+struct TSeries {
     std::string label;
     std::vector<double> x, y;
     std::optional<mrpt::img::TColor> color;  //!< default: a fixed palette
@@ -69,8 +64,7 @@ struct TSeries
     bool line = true;
 };
 
-struct TLinePlot
-{
+struct TLinePlot {
     std::string title, xLabel, yLabel;
     std::vector<TSeries> series;
     bool logX = false, logY = false;  //!< non-positive values are skipped

@@ -7,11 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace rfir::eval
-{
+namespace rfir::eval {
 /** The evaluation of one run (one method on one data set). */
-struct TEvalResult
-{
+struct TEvalResult {
     std::string label = "estimate";  //!< method name, first table column
     std::optional<TRobotErrors> robot;
     /** Dead reckoning on the same data (odometry aligned at the start pose). */
@@ -19,8 +17,7 @@ struct TEvalResult
     std::optional<TMapErrors> map;
 };
 
-struct TTableOptions
-{
+struct TTableOptions {
     bool showMax = true;  //!< add the "max" columns beside the "mean" ones
 };
 

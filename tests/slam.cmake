@@ -7,3 +7,9 @@ if(TARGET rfir_sim)
     SOURCES test_slam_accuracy.cpp
     LIBS rfir_slam rfir_sim rfir_eval)
 endif()
+if(TARGET rfir_sim)
+  # The experiments of docs/slam.md: DISABLED_ tests, run by hand.
+  rfir_add_test(test_slam_experiments
+    SOURCES test_slam_experiments.cpp
+    LIBS rfir_slam rfir_sim rfir_eval)
+endif()

@@ -6,10 +6,12 @@
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_engine.h>
 
-#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,8 +50,11 @@ inline rfir::slam::TSlamConfig stockConfig(
     const std::vector<std::pair<std::string, std::string>>& edits = {})
 {
     const std::string file = method == "fastslam" ? "fastslam" : method == "ps" ? "ps" : "pf";
-    mrpt::config::CConfigFile f(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" +
-                                file + ".ini");
+    // A memory copy: CConfigFile would write the edits back into the stock INI.
+    std::ifstream in(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + file + ".ini");
+    std::stringstream text;
+    text << in.rdbuf();
+    mrpt::config::CConfigFileMemory f(text.str());
     for (const auto& [sk, v] : edits)
     {
         const auto dot = sk.find('.');

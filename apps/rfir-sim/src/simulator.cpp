@@ -112,6 +112,7 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed)
         }
     auto& h = out.header;
     h.sensorLabel = "HEADER";
+    h.timestamp = mrpt::Clock::fromDouble(0);  // not "now": outputs must be reproducible
     if (cfg.rfid.enabled) h.readers = cfg.readers;
     if (cfg.ir.enabled) h.receivers = cfg.receivers;
     if (cfg.rb.enabled)

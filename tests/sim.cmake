@@ -1,0 +1,8 @@
+# rfir_sim: INI handling, sensor models against ground truth, determinism,
+# trajectories, kidnapping and odometry noise; the rfir-sim program.
+if(TARGET rfir_sim)
+  rfir_add_test(test_sim
+    SOURCES test_sim_config.cpp test_sim_models.cpp test_sim_outputs.cpp
+    LIBS rfir_sim)
+  add_dependencies(test_sim rfir-sim)
+endif()

@@ -151,7 +151,7 @@ TEST(TagEstimators, SmootherVersusFilterOnLargeReaders)
     // 300 mm readers (seeds' PS-SLAM setup). Numbers are printed for the
     // report; the assertions only bound the errors well below the reader size.
     TagParticleFilterParams rough;
-    rough.rougheningSigma = 0.005;
+    rough.rougheningSigma = 0.001;
     for (double noise : {0.0, 0.02})
         for (int reads : {10, 30})
         {

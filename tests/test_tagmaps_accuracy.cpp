@@ -1,5 +1,5 @@
 // Tag maps built from exact robot poses on lawn-mower passes: PF vs PS.
-#include "tagmaps_sim.h"
+#include "test_tagmaps_sim.h"
 
 #include <gtest/gtest.h>
 
@@ -41,7 +41,7 @@ TEST(TagMapAccuracy, FilterAndSmootherOnSmallAndLargeReaders)
     const double pf60 = mapError(TTagEstimatorKind::ParticleFilter, 0.03, 0.25, 0.07);
     const double ps60 = mapError(TTagEstimatorKind::FixedLagSmoother, 0.03, 0.25, 0.07);
     const double pf300 = mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13);
-    const double pfr300 = mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13, 0.005);
+    const double pfr300 = mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13, 0.001);
     const double ps300 = mapError(TTagEstimatorKind::FixedLagSmoother, 0.15, 0.5, 0.13);
     std::printf("[map, exact poses, 2 crossed sweeps] 60 mm: PF %.1f mm, PS %.1f mm; "
                 "300 mm: PF %.1f mm, PF+roughening %.1f mm, PS %.1f mm\n",
@@ -50,4 +50,7 @@ TEST(TagMapAccuracy, FilterAndSmootherOnSmallAndLargeReaders)
     EXPECT_LT(ps60, 0.012);
     EXPECT_LT(pf300, 0.05);
     EXPECT_LT(ps300, 0.05);
+    // The seeds' finding: on large readers the smoother beats the literal PF,
+    // whose particles collapse (its reported spread is far below its error).
+    EXPECT_LT(ps300, pf300);
 }

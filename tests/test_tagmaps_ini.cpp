@@ -1,6 +1,6 @@
 // CRFIDTagParticleMap: creation from INI text, rejected options, serialization
 // round trips (direct and through CMultiMetricMap copies), text and 3D output.
-#include "tagmaps_sim.h"
+#include "test_tagmaps_sim.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>

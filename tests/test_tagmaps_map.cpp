@@ -1,6 +1,6 @@
 // CRFIDTagParticleMap: insertion, likelihood, robot-update policies, O(1)
 // updates, range-bearing landmarks, serialization, output.
-#include "tagmaps_sim.h"
+#include "test_tagmaps_sim.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/io/CMemoryStream.h>

@@ -126,7 +126,7 @@ public:
         TTagEstimatorKind estimator = TTagEstimatorKind::ParticleFilter;
         size_t numParticles = 100;  //!< num_particles (L)
         size_t lag = 25;            //!< lag (smoother)
-        double smootherStepSigma = 0.01;  //!< smoother_step_sigma (m)
+        double smootherStepSigma = 0.001;  //!< smoother_step_sigma (m)
         double rougheningSigma = 0.0;     //!< roughening_sigma (m, PF only)
         double essThreshold = 1.0;        //!< ess_threshold (PF only)
         rfir::models::ResamplingScheme resampling =

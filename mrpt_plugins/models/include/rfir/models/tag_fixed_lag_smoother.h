@@ -19,7 +19,7 @@ struct TagFixedLagSmootherParams
     size_t lag = 25;            //!< states kept per particle (seeds: 20-30)
     /** Std (m) of the Gaussian random step applied to every particle on each
      * re-detection (thesis Alg. 2 line 11); keeps the set diverse. */
-    double stepSigma = 0.01;
+    double stepSigma = 0.001;
     ResamplingScheme resampling = ResamplingScheme::Systematic;
 };
 

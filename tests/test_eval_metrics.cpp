@@ -80,6 +80,26 @@ TEST(EvalMetrics, RobotErrorsByHand) {
     EXPECT_NEAR(r.stats.max_dist, 0.05, 1e-12);
 }
 
+TEST(EvalMetrics, RobotErrorsAtTruthTimes) {
+    // Sparse truth (two marked spots) against a dense estimate.
+    const TPath2D est{
+        {0, CPose2D(0, 0, 0)}, {1, CPose2D(1, 0.1, 0.2)}, {2, CPose2D(2, 0, 0)}};
+    const TPath2D spots{
+        {0.5, CPose2D(0.5, 0, 0)}, {1.5, CPose2D(1.5, 0, -0.1)}, {7, CPose2D(0, 0, 0)}};
+    const auto r = computeRobotErrors(est, spots, Association::AtTruthTimes);
+    ASSERT_EQ(r.perPose.size(), 2u);
+    EXPECT_EQ(r.skipped, 1u);  // t = 7 is after the estimate ends
+    EXPECT_NEAR(r.perPose[0].t, 0.5, 1e-12);
+    EXPECT_NEAR(r.perPose[0].dy, 0.05, 1e-12);     // estimate minus truth
+    EXPECT_NEAR(r.perPose[1].dtheta, 0.2, 1e-12);  // est 0.1 vs truth -0.1
+    EXPECT_NEAR(r.stats.mean_dist, 0.05, 1e-12);
+    // The default pairs every estimated pose with the (interpolated) spots.
+    EXPECT_EQ(computeRobotErrors(est, spots).perPose.size(), 2u);
+    const TPath2D unsorted{{1, CPose2D()}, {0, CPose2D()}};
+    EXPECT_THROW(computeRobotErrors(unsorted, spots, Association::AtTruthTimes),
+                 std::runtime_error);
+}
+
 TEST(EvalMetrics, RobotErrorsRejectBadPaths) {
     const TPath2D gt{{0, CPose2D(0, 0, 0)}, {1, CPose2D(1, 0, 0)}};
     EXPECT_THROW(computeRobotErrors({}, gt), std::runtime_error);
@@ -178,6 +198,11 @@ TEST(EvalMetrics, DeadReckoningAlignedAtStart) {
     EXPECT_NEAR(dr[1].pose.y(), 2, 1e-12);
     EXPECT_NEAR(dr[1].pose.phi(), 0, 1e-12);
     EXPECT_THROW(alignOdometryAtStart({{7, CPose2D()}}, gt), std::runtime_error);
+    // From a known start pose instead: same path.
+    const auto dr2 = alignOdometryAt(odo, CPose2D(1, 2, 0));
+    ASSERT_EQ(dr2.size(), 2u);
+    EXPECT_NEAR(dr2[1].pose.x(), 2, 1e-12);
+    EXPECT_NEAR(dr2[1].pose.y(), 2, 1e-12);
 }
 
 TEST(EvalReport, JsonKeysAndTable) {

@@ -70,30 +70,39 @@ TErrorStats statsOf(const std::vector<TPoseError>& errs) {
     return s;
 }
 
-TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt) {
+TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt,
+                                Association assoc) {
+    const bool atTruth = assoc == Association::AtTruthTimes;
     if (est.empty()) throw std::runtime_error("estimated path: the path has no pose");
     checkPath(gt, "ground-truth path");
+    if (atTruth) checkPath(est, "estimated path");
+    // `samples` are paired with `other` interpolated at their times.
+    const TPath2D& samples = atTruth ? gt : est;
+    const TPath2D& other = atTruth ? est : gt;
     TRobotErrors r;
-    for (const auto& p : est) {
-        const auto g = interpolatePose(gt, p.t);
-        if (!g) {
+    for (const auto& p : samples) {
+        const auto q = interpolatePose(other, p.t);
+        if (!q) {
             r.skipped++;
             continue;
         }
-        TPoseError e;
-        e.t = p.t;
-        e.dx = p.pose.x() - g->x();
-        e.dy = p.pose.y() - g->y();
-        e.dtheta = wrapToPi(p.pose.phi() - g->phi());
-        e.dist = std::hypot(e.dx, e.dy);
-        r.perPose.push_back(e);
+        const mrpt::poses::CPose2D& e = atTruth ? *q : p.pose;
+        const mrpt::poses::CPose2D& g = atTruth ? p.pose : *q;
+        TPoseError pe;
+        pe.t = p.t;
+        pe.dx = e.x() - g.x();
+        pe.dy = e.y() - g.y();
+        pe.dtheta = wrapToPi(e.phi() - g.phi());
+        pe.dist = std::hypot(pe.dx, pe.dy);
+        r.perPose.push_back(pe);
     }
     if (r.perPose.empty())
         throw std::runtime_error(
-            "no estimated pose lies within the ground truth's time span [" +
-            std::to_string(gt.front().t) + ", " + std::to_string(gt.back().t) +
-            "] s (estimate spans [" + std::to_string(est.front().t) + ", " +
-            std::to_string(est.back().t) + "] s)");
+            std::string(atTruth ? "no ground-truth pose lies within the estimate's"
+                                : "no estimated pose lies within the ground truth's") +
+            " time span (ground truth [" + std::to_string(gt.front().t) + ", " +
+            std::to_string(gt.back().t) + "] s, estimate [" +
+            std::to_string(est.front().t) + ", " + std::to_string(est.back().t) + "] s)");
     r.stats = statsOf(r.perPose);
     return r;
 }
@@ -169,6 +178,13 @@ TPath2D alignOdometryAtStart(const TPath2D& odometry, const TPath2D& gt) {
     const auto& o0 = odometry[k].pose;
     for (size_t i = k; i < odometry.size(); i++)
         out.push_back({odometry[i].t, *g0 + (odometry[i].pose - o0)});
+    return out;
+}
+
+TPath2D alignOdometryAt(const TPath2D& odometry, const mrpt::poses::CPose2D& start) {
+    TPath2D out;
+    for (const auto& o : odometry)
+        out.push_back({o.t, start + (o.pose - odometry.front().pose)});
     return out;
 }
 

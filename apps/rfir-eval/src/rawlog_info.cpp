@@ -9,6 +9,7 @@ TRawlogInfo readRawlogInfo(const std::string& rawlogPath) {
     TRawlogInfo info;
     info.readers = rd.header().readers;
     info.rbSensor = rd.header().rbSensor;
+    info.startPose = rd.header().startPose;
     const bool readersFromHeader = !info.readers.empty();
     std::map<std::string, rfir::obs::TRFIDReader> seenReaders;
     rfir::common::TPath2D absolute, accumulated;

@@ -16,7 +16,7 @@ using rfir::common::TMapEntry;
 
 struct TArgs {
     std::string path, gtPath, map, gtMap, rawlog, label, plot, title, jsonFile, kind;
-    bool jsonOnly = false, noOdometry = false, ids = false;
+    bool jsonOnly = false, noOdometry = false, ids = false, atGtTimes = false;
 };
 
 /** Option combinations TCLAP cannot express. */
@@ -62,6 +62,11 @@ TArgs parse(int argc, char** argv) {
         "the rawlog of the run: reader / sensor geometry for the "
         "passed-over count, odometry for the dead-reckoning row",
         false, "", "FILE", cmd);
+    TCLAP::SwitchArg atGt("", "at-gt-times",
+                          "pair each ground-truth pose with the estimate interpolated "
+                          "at its time (sparse truth, e.g. the IR spots), instead of "
+                          "each estimated pose with the interpolated truth",
+                          cmd);
     TCLAP::SwitchArg noOdom("", "no-odometry", "no dead-reckoning row", cmd);
     TCLAP::ValueArg<std::string> label("", "label", "method name in the table and JSON",
                                        false, "estimate", "NAME", cmd);
@@ -91,6 +96,7 @@ TArgs parse(int argc, char** argv) {
     a.jsonFile = jsonFile.getValue();
     a.kind = kind.getValue(), a.jsonOnly = jsonOnly.getValue();
     a.noOdometry = noOdom.getValue(), a.ids = ids.getValue();
+    a.atGtTimes = atGt.getValue();
     validate(a);
     return a;
 }
@@ -117,6 +123,8 @@ int run(const TArgs& a) {
     fig.title = a.title.empty() ? a.label : a.title;
     fig.showIds = a.ids;
     rfir::common::TPath2D gt;
+    const auto assoc =
+        a.atGtTimes ? Association::AtTruthTimes : Association::AtEstimateTimes;
     if (!a.gtPath.empty()) {
         gt = rfir::common::loadTUM(a.gtPath);
         checkPath(gt, a.gtPath);
@@ -125,15 +133,20 @@ int run(const TArgs& a) {
     if (!a.path.empty()) {
         const auto est = rfir::common::loadTUM(a.path);
         if (est.empty()) throw std::runtime_error(a.path + ": the path has no pose");
-        r.robot = computeRobotErrors(est, gt);
+        if (a.atGtTimes) checkPath(est, a.path);  // interpolated: must be sorted
+        r.robot = computeRobotErrors(est, gt, assoc);
         fig.estPath = est;
         fig.estPathLabel = a.label;
     }
     std::optional<TRawlogInfo> info;
     if (!a.rawlog.empty()) info = readRawlogInfo(a.rawlog);
     if (info && !gt.empty() && !a.noOdometry && !info->odometry.empty()) {
-        const auto dr = alignOdometryAtStart(info->odometry, gt);
-        r.odometry = computeRobotErrors(dr, gt);
+        // Dead reckoning from the known start pose (as the filters start), or
+        // from the ground truth at the first odometry time.
+        const auto dr = info->startPose
+                            ? alignOdometryAt(info->odometry, *info->startPose)
+                            : alignOdometryAtStart(info->odometry, gt);
+        r.odometry = computeRobotErrors(dr, gt, assoc);
         fig.odomPath = dr;
     }
     if (!a.gtMap.empty()) fig.gtMap = rfir::common::loadMapFile(a.gtMap);

@@ -74,12 +74,25 @@ std::optional<mrpt::poses::CPose2D> interpolatePose(const rfir::common::TPath2D&
  * std::runtime_error naming `what` (e.g. the file) otherwise. */
 void checkPath(const rfir::common::TPath2D& p, const std::string& what);
 
-/** Robot errors: each estimated pose against the ground truth interpolated at
- * its timestamp (interpolatePose). Poses outside the truth's time span are
- * counted in `skipped`. Throws std::runtime_error if no pose can be evaluated
- * or a path is empty / not sorted by time. */
+/** How estimated and true poses are paired. */
+enum class Association {
+    /** Each estimated pose against the truth interpolated at its time (the
+     * seeds' tables: errors along the whole estimated path). */
+    AtEstimateTimes,
+    /** Each true pose against the estimate interpolated at its time: for a
+     * sparse ground truth such as the IR experiment's marked spots
+     * (thesis table 5.2). */
+    AtTruthTimes
+};
+
+/** Robot errors, pairing poses by time (interpolatePose; errors are always
+ * estimate minus truth). Poses with no partner inside the other path's time
+ * span are counted in `skipped`. Throws std::runtime_error if no pose can be
+ * evaluated or a path is empty / not sorted by time (the interpolated path
+ * must be sorted). */
 TRobotErrors computeRobotErrors(const rfir::common::TPath2D& est,
-                                const rfir::common::TPath2D& gt);
+                                const rfir::common::TPath2D& gt,
+                                Association assoc = Association::AtEstimateTimes);
 
 /** Statistics of a set of per-pose errors (e.g. a time window of perPose). */
 TErrorStats statsOf(const std::vector<TPoseError>& errs);
@@ -126,6 +139,8 @@ struct TRawlogInfo {
     /** Absolute odometry poses (CObservationOdometry), or the accumulated
      * odometry increments when absolute poses are absent. Raw odometry frame. */
     rfir::common::TPath2D odometry;
+    /** The robot's world pose at the first odometry record (textlog `start`). */
+    std::optional<mrpt::poses::CPose2D> startPose;
     size_t steps = 0;
 };
 
@@ -137,5 +152,10 @@ TRawlogInfo readRawlogInfo(const std::string& rawlogPath);
  * poses before the truth's start are dropped. Throws if nothing overlaps. */
 rfir::common::TPath2D alignOdometryAtStart(const rfir::common::TPath2D& odometry,
                                            const rfir::common::TPath2D& gt);
+
+/** Dead-reckoning path from a known world pose at the first odometry record
+ * (the rawlog header's start pose): start + (O0^-1 + Oi). */
+rfir::common::TPath2D alignOdometryAt(const rfir::common::TPath2D& odometry,
+                                      const mrpt::poses::CPose2D& start);
 
 }  // namespace rfir::eval

@@ -12,15 +12,13 @@ using namespace rfir::models;
 using mrpt::math::TPoint2D;
 using mrpt::math::TPose2D;
 
-TEST(TagParticleFilter, InitUniformOverPlacedReader)
-{
+TEST(TagParticleFilter, InitUniformOverPlacedReader) {
     mrpt::random::CRandomGenerator rng(1);
     TagParticleFilter pf;
     pf.initUniform({2.0, 1.0, M_PI / 2}, {0.1, 0.0, 0.03, 0.15}, rng);
     ASSERT_EQ(pf.particles().size(), 100u);
     // Reader centre in the world: (2, 1.1); rotated: 0.3 m along x, 0.06 along y.
-    for (const auto& p : pf.particles())
-    {
+    for (const auto& p : pf.particles()) {
         EXPECT_LE(std::abs(p.x - 2.0), 0.15 + 1e-12);
         EXPECT_LE(std::abs(p.y - 1.1), 0.03 + 1e-12);
     }
@@ -31,8 +29,7 @@ TEST(TagParticleFilter, InitUniformOverPlacedReader)
     EXPECT_THROW(none.initUniform({0, 0, 0}, {}, rng), std::invalid_argument);
 }
 
-TEST(TagParticleFilter, UpdateWeighsEstimatesAndResamples)
-{
+TEST(TagParticleFilter, UpdateWeighsEstimatesAndResamples) {
     mrpt::random::CRandomGenerator rng(2);
     TagParticleFilter pf;
     pf.initFromPoints({{0, 0}, {1, 0}, {2, 0}, {3, 0}});
@@ -45,8 +42,7 @@ TEST(TagParticleFilter, UpdateWeighsEstimatesAndResamples)
     EXPECT_EQ(pf.updateCount(), 1u);
 }
 
-TEST(TagFixedLagSmoother, HistoriesTravelWithParticlesAndLagCaps)
-{
+TEST(TagFixedLagSmoother, HistoriesTravelWithParticlesAndLagCaps) {
     mrpt::random::CRandomGenerator rng(3);
     TagFixedLagSmootherParams p;
     p.lag = 3;
@@ -57,8 +53,7 @@ TEST(TagFixedLagSmoother, HistoriesTravelWithParticlesAndLagCaps)
     auto left = [](const TPoint2D& q) { return q.x < 5 ? 0.0 : -1e9; };
     for (int k = 0; k < 5; k++) ps.update(left, rng);
     EXPECT_EQ(ps.storedStates(), 3u);  // only the last `lag` states
-    for (size_t j = 0; j < 4; j++)
-    {
+    for (size_t j = 0; j < 4; j++) {
         const auto h = ps.history(j);
         ASSERT_EQ(h.size(), 3u);
         for (const auto& s : h) EXPECT_EQ(s.x, 0.0);  // the survivor's own past
@@ -71,8 +66,7 @@ TEST(TagFixedLagSmoother, HistoriesTravelWithParticlesAndLagCaps)
     walk.initFromPoints(std::vector<TPoint2D>(50, TPoint2D(0, 0)));
     for (int k = 0; k < 6; k++) walk.update([](const TPoint2D&) { return 0.0; }, rng);
     const auto sm = walk.smoothedParticles();
-    for (size_t j = 0; j < 50; j++)
-    {
+    for (size_t j = 0; j < 50; j++) {
         const auto h = walk.history(j);
         ASSERT_EQ(h.size(), 4u);
         double mx = 0;
@@ -83,19 +77,17 @@ TEST(TagFixedLagSmoother, HistoriesTravelWithParticlesAndLagCaps)
     }
 }
 
-namespace
-{
+namespace {
 /** Reads of a tag at `truth` from random robot poses (any heading, one of 8
  * readers, the tag anywhere inside that reader's square). The estimator sees
  * the robot pose with Gaussian noise (poseNoise m, poseNoise rad/m * 1). */
-struct ReadSim
-{
+struct ReadSim {
     double half;
     double poseNoise;
     mrpt::random::CRandomGenerator rng;
-    ReadSim(double h, double noise, uint32_t seed) : half(h), poseNoise(noise), rng(seed) {}
-    std::pair<TPose2D, ReaderArea> read(const TPoint2D& truth)
-    {
+    ReadSim(double h, double noise, uint32_t seed)
+        : half(h), poseNoise(noise), rng(seed) {}
+    std::pair<TPose2D, ReaderArea> read(const TPoint2D& truth) {
         static const double rx[8] = {0.2, 0.2, -0.2, -0.2, 0.0, 0.0, 0.2, -0.2};
         static const double ry[8] = {0.2, -0.2, 0.2, -0.2, 0.2, -0.2, 0.0, 0.0};
         const int k = static_cast<int>(rng.drawUniform(0, 8)) % 8;
@@ -113,20 +105,18 @@ struct ReadSim
 };
 
 template <class EST>
-double meanError(EST proto, double half, double noise, int reads, int tags, uint32_t seed)
-{
+double meanError(EST proto, double half, double noise, int reads, int tags,
+                 uint32_t seed) {
     ReadSim sim(half, noise, seed);
     mrpt::random::CRandomGenerator rng(seed + 1);
     const DetectionLikelihood det;
     double sum = 0;
-    for (int t = 0; t < tags; t++)
-    {
+    for (int t = 0; t < tags; t++) {
         const TPoint2D truth(sim.rng.drawUniform(-5, 5), sim.rng.drawUniform(-5, 5));
         EST est = proto;
         auto [pose0, r0] = sim.read(truth);
         est.initUniform(pose0, r0, rng);
-        for (int k = 1; k < reads; k++)
-        {
+        for (int k = 1; k < reads; k++) {
             auto [pose, r] = sim.read(truth);
             est.update([&](const TPoint2D& p) { return det.logLikelihood(pose, r, p); },
                        rng);
@@ -138,27 +128,25 @@ double meanError(EST proto, double half, double noise, int reads, int tags, uint
 }
 }  // namespace
 
-TEST(TagEstimators, PFConvergesForSmallReaders)
-{
+TEST(TagEstimators, PFConvergesForSmallReaders) {
     // 60 mm readers, exact robot poses, 40 reads: within a few mm.
     const double pf = meanError(TagParticleFilter(), 0.03, 0.0, 40, 40, 10);
     std::printf("[60 mm, exact poses, 40 reads] PF mean error %.2f mm\n", pf * 1e3);
     EXPECT_LT(pf, 0.004);
 }
 
-TEST(TagEstimators, SmootherVersusFilterOnLargeReaders)
-{
+TEST(TagEstimators, SmootherVersusFilterOnLargeReaders) {
     // 300 mm readers (seeds' PS-SLAM setup). Numbers are printed for the
     // report; the assertions only bound the errors well below the reader size.
     TagParticleFilterParams rough;
     rough.rougheningSigma = 0.001;
     for (double noise : {0.0, 0.02})
-        for (int reads : {10, 30})
-        {
+        for (int reads : {10, 30}) {
             const double pf = meanError(TagParticleFilter(), 0.15, noise, reads, 60, 20);
             const double pfr =
                 meanError(TagParticleFilter(rough), 0.15, noise, reads, 60, 20);
-            const double ps = meanError(TagFixedLagSmoother(), 0.15, noise, reads, 60, 20);
+            const double ps =
+                meanError(TagFixedLagSmoother(), 0.15, noise, reads, 60, 20);
             std::printf(
                 "[300 mm, pose noise %.0f mm, %d reads] error PF %.1f mm, PF+roughening "
                 "%.1f mm, PS %.1f mm\n",
@@ -168,8 +156,7 @@ TEST(TagEstimators, SmootherVersusFilterOnLargeReaders)
         }
 }
 
-TEST(TagEstimators, SameSeedSameResult)
-{
+TEST(TagEstimators, SameSeedSameResult) {
     auto run = [] {
         mrpt::random::CRandomGenerator rng(42);
         TagFixedLagSmoother ps;
@@ -179,8 +166,7 @@ TEST(TagEstimators, SameSeedSameResult)
         return ps.smoothedParticles();
     };
     const auto a = run(), b = run();
-    for (size_t j = 0; j < a.size(); j++)
-    {
+    for (size_t j = 0; j < a.size(); j++) {
         EXPECT_EQ(a[j].x, b[j].x);
         EXPECT_EQ(a[j].y, b[j].y);
     }

@@ -11,17 +11,16 @@
 
 using namespace rfir::models;
 
-TEST(DetectionLikelihood, StepInsideEdgeOutside)
-{
+TEST(DetectionLikelihood, StepInsideEdgeOutside) {
     const double h = 0.03, beta = 1.618;
     // Inside the square: w = 1 exactly.
     EXPECT_EQ(std::exp(stepDetectionLogLikelihood(0.01, -0.02, h, h, beta)), 1.0);
     // On the edge (|ex| = sigma is not "< sigma"): beta e^{-1/2} = 0.98137
-    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.03, 0.0, h, h, beta)),
-                0.9813666074, 1e-9);
+    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.03, 0.0, h, h, beta)), 0.9813666074,
+                1e-9);
     // Two sigmas out: 1.618 e^{-2} = 0.21897
-    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.06, 0.0, h, h, beta)),
-                0.2189724883, 1e-9);
+    EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.06, 0.0, h, h, beta)), 0.2189724883,
+                1e-9);
     // Outside in x, inside in y: e^T e uses both components (thesis eq. 3.7)
     EXPECT_NEAR(std::exp(stepDetectionLogLikelihood(0.04, 0.01, h, h, beta)),
                 0.6292330225, 1e-9);
@@ -31,8 +30,7 @@ TEST(DetectionLikelihood, StepInsideEdgeOutside)
     EXPECT_EQ(stepDetectionLogLikelihood(0.14, 0.04, 0.15, 0.05, beta), 0.0);
 }
 
-TEST(DetectionLikelihood, GaussianAndFunctor)
-{
+TEST(DetectionLikelihood, GaussianAndFunctor) {
     EXPECT_NEAR(gaussianDetectionLogLikelihood(0.03, 0.03, 0.03, 0.03), -1.0, 1e-12);
     DetectionModelParams p;
     p.model = DetectionModel::Gaussian;
@@ -41,8 +39,7 @@ TEST(DetectionLikelihood, GaussianAndFunctor)
     EXPECT_NEAR(g.logLikelihoodOffset(0.06, 0.0, 0.03, 0.03), -0.5, 1e-12);
 }
 
-TEST(DetectionLikelihood, OffsetIsInRobotFrame)
-{
+TEST(DetectionLikelihood, OffsetIsInRobotFrame) {
     const DetectionLikelihood step;  // defaults: step, beta 1.618
     const mrpt::math::TPose2D robot(1.0, 2.0, M_PI / 2);
     const ReaderArea r{0.1, 0.0, 0.03, 0.03};
@@ -58,8 +55,7 @@ TEST(DetectionLikelihood, OffsetIsInRobotFrame)
     EXPECT_LT(step.likelihood(robot, wide, {1.0, 2.2}), 0.5);
 }
 
-TEST(RangeBearing, LikelihoodAndInverse)
-{
+TEST(RangeBearing, LikelihoodAndInverse) {
     RangeBearingParams p;
     p.sigmaRange = 0.01;
     p.sigmaBearing = 0.05;
@@ -87,16 +83,15 @@ TEST(RangeBearing, LikelihoodAndInverse)
     EXPECT_NEAR(std::sqrt(vy), 0.4 * 0.05, 0.002);  // lateral spread = r sigma_b
 }
 
-TEST(Resampling, SystematicIsExactAndSeeded)
-{
+TEST(Resampling, SystematicIsExactAndSeeded) {
     mrpt::random::CRandomGenerator rng(7);
     const std::vector<double> lw = {0.0, std::log(3.0)};
     const auto idx = resampleIndices(lw, 4, ResamplingScheme::Systematic, rng);
     EXPECT_EQ(idx, (std::vector<size_t>{0, 1, 1, 1}));
-    const std::vector<double> lw2 = {-1e300, 0.0, -std::numeric_limits<double>::infinity()};
+    const std::vector<double> lw2 = {-1e300, 0.0,
+                                     -std::numeric_limits<double>::infinity()};
     for (auto s : {ResamplingScheme::Systematic, ResamplingScheme::Stratified,
-                   ResamplingScheme::Multinomial})
-    {
+                   ResamplingScheme::Multinomial}) {
         for (size_t i : resampleIndices(lw2, 10, s, rng)) EXPECT_EQ(i, 1u);
         mrpt::random::CRandomGenerator a(11), b(11);
         const std::vector<double> w = {0.1, 0.5, -0.3, 0.0, 1.0};
@@ -112,42 +107,37 @@ TEST(Resampling, SystematicIsExactAndSeeded)
     EXPECT_THROW(resamplingSchemeFromString("residual"), std::invalid_argument);
 }
 
-TEST(IniCheck, UnknownKeysAndBadValuesNameTheKey)
-{
+TEST(IniCheck, UnknownKeysAndBadValuesNameTheKey) {
     mrpt::config::CConfigFileMemory cfg(
         "[s]\nalpha = 1\nbeta = x\nmode = fast\nn = 0\nm = -2\n");
     EXPECT_NO_THROW(rfir::checkIniKeys(cfg, "s", {"alpha", "beta", "mode", "n", "m"}));
     EXPECT_NO_THROW(rfir::checkIniKeys(cfg, "missing", {}));
-    try
-    {
+    try {
         rfir::checkIniKeys(cfg, "s", {"alpha", "beta", "n", "m"});
         FAIL();
-    }
-    catch (const std::runtime_error& e)
-    {
+    } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("'mode'"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("[s]"), std::string::npos) << e.what();
     }
     auto msg = [&](auto f) {
-        try
-        {
+        try {
             f();
-        }
-        catch (const std::runtime_error& e)
-        {
+        } catch (const std::runtime_error& e) {
             return std::string(e.what());
         }
         return std::string("no throw");
     };
-    EXPECT_NE(msg([&] { rfir::readIniEnum(cfg, "s", "mode", {"slow", "exact"}, 0); })
-                  .find("mode"),
+    EXPECT_NE(msg([&] {
+                  rfir::readIniEnum(cfg, "s", "mode", {"slow", "exact"}, 0);
+              }).find("mode"),
               std::string::npos);
     EXPECT_NE(msg([&] { rfir::readIniPositiveInt(cfg, "s", "n", 5); }).find("[s] n"),
               std::string::npos);
     EXPECT_NE(msg([&] { rfir::readIniPositiveInt(cfg, "s", "m", 5); }).find("[s] m"),
               std::string::npos);
-    EXPECT_NE(msg([&] { rfir::readIniDouble(cfg, "s", "beta", 1, 0, true); }).find("beta"),
-              std::string::npos);
+    EXPECT_NE(
+        msg([&] { rfir::readIniDouble(cfg, "s", "beta", 1, 0, true); }).find("beta"),
+        std::string::npos);
     EXPECT_EQ(rfir::readIniPositiveInt(cfg, "s", "absent", 5), 5u);
     EXPECT_EQ(rfir::readIniEnum(cfg, "s", "absent", {"a", "b"}, 1), 1u);
     EXPECT_EQ(rfir::readIniDouble(cfg, "s", "alpha", 7, 0, true), 1.0);

@@ -9,11 +9,9 @@ using namespace tagmaps_test;
 using rfir::maps::CRFIDTagParticleMap;
 using rfir::maps::TTagEstimatorKind;
 
-namespace
-{
+namespace {
 double mapError(TTagEstimatorKind kind, double half, double pitch, double rowStep,
-                double roughening = 0.0)
-{
+                double roughening = 0.0) {
     CRFIDTagParticleMap m;
     m.insertionOptions.estimator = kind;
     m.insertionOptions.rougheningSigma = roughening;
@@ -23,10 +21,10 @@ double mapError(TTagEstimatorKind kind, double half, double pitch, double rowSte
     auto poses = lawnmower(-0.6, span + 0.6, -0.6, span + 0.6, rowStep, 0.02);
     for (auto p : lawnmower(-0.6, span + 0.6, -0.6, span + 0.6, rowStep * 1.37, 0.02))
         poses.push_back({p.y, p.x, p.phi + M_PI / 2});
-    for (const auto& p : poses) m.insertObservation(*sense(ring(half), tags, p), pose3(p));
+    for (const auto& p : poses)
+        m.insertObservation(*sense(ring(half), tags, p), pose3(p));
     double sum = 0;
-    for (const auto& t : tags)
-    {
+    for (const auto& t : tags) {
         const auto* e = m.getTag(t.id);
         EXPECT_NE(e, nullptr) << t.id;
         if (!e) return 1e9;
@@ -36,16 +34,17 @@ double mapError(TTagEstimatorKind kind, double half, double pitch, double rowSte
 }
 }  // namespace
 
-TEST(TagMapAccuracy, FilterAndSmootherOnSmallAndLargeReaders)
-{
+TEST(TagMapAccuracy, FilterAndSmootherOnSmallAndLargeReaders) {
     const double pf60 = mapError(TTagEstimatorKind::ParticleFilter, 0.03, 0.25, 0.07);
     const double ps60 = mapError(TTagEstimatorKind::FixedLagSmoother, 0.03, 0.25, 0.07);
     const double pf300 = mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13);
-    const double pfr300 = mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13, 0.001);
+    const double pfr300 =
+        mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13, 0.001);
     const double ps300 = mapError(TTagEstimatorKind::FixedLagSmoother, 0.15, 0.5, 0.13);
-    std::printf("[map, exact poses, 2 crossed sweeps] 60 mm: PF %.1f mm, PS %.1f mm; "
-                "300 mm: PF %.1f mm, PF+roughening %.1f mm, PS %.1f mm\n",
-                pf60 * 1e3, ps60 * 1e3, pf300 * 1e3, pfr300 * 1e3, ps300 * 1e3);
+    std::printf(
+        "[map, exact poses, 2 crossed sweeps] 60 mm: PF %.1f mm, PS %.1f mm; "
+        "300 mm: PF %.1f mm, PF+roughening %.1f mm, PS %.1f mm\n",
+        pf60 * 1e3, ps60 * 1e3, pf300 * 1e3, pfr300 * 1e3, ps300 * 1e3);
     EXPECT_LT(pf60, 0.006);
     EXPECT_LT(ps60, 0.012);
     EXPECT_LT(pf300, 0.05);

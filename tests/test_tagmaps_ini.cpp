@@ -17,8 +17,7 @@
 using namespace tagmaps_test;
 using rfir::maps::CRFIDTagParticleMap;
 
-namespace
-{
+namespace {
 const char* kIni = R"(
 [MappingApplication]
 rfidTagMap_count = 1
@@ -39,26 +38,21 @@ revisit_min_gap = 3
 rb_sigma_bearing_deg = 2
 )";
 
-std::string loadError(const std::string& section, const std::string& line)
-{
-    std::string ini = std::string("[M]\nrfidTagMap_count=1\n[M_rfidTagMap_00_") + section +
-                      "]\n" + line + "\n";
+std::string loadError(const std::string& section, const std::string& line) {
+    std::string ini = std::string("[M]\nrfidTagMap_count=1\n[M_rfidTagMap_00_") +
+                      section + "]\n" + line + "\n";
     mrpt::config::CConfigFileMemory cfg(ini);
     mrpt::maps::TSetOfMetricMapInitializers defs;
-    try
-    {
+    try {
         defs.loadFromConfigFile(cfg, "M");
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         return e.what();
     }
     return "no error";
 }
 }  // namespace
 
-TEST(TagMapIni, CreatedThroughMultiMetricMap)
-{
+TEST(TagMapIni, CreatedThroughMultiMetricMap) {
     rfir::maps::registerAllClasses();
     mrpt::config::CConfigFileMemory cfg(kIni);
     mrpt::maps::TSetOfMetricMapInitializers defs;
@@ -90,10 +84,8 @@ TEST(TagMapIni, CreatedThroughMultiMetricMap)
     EXPECT_GT(m->tagCount(), 0u);
 }
 
-TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey)
-{
-    struct Case
-    {
+TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey) {
+    struct Case {
         const char* section;
         const char* line;
         const char* key;
@@ -113,8 +105,7 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey)
         {"likelihoodOpts", "revisit_min_gap = 0", "revisit_min_gap"},
         {"likelihoodOpts", "robotupdate = literal", "robotupdate"},
     };
-    for (const auto& c : cases)
-    {
+    for (const auto& c : cases) {
         const std::string err = loadError(c.section, c.line);
         EXPECT_NE(err.find(c.key), std::string::npos) << c.line << " -> " << err;
         EXPECT_NE(err.find(c.section), std::string::npos) << c.line << " -> " << err;
@@ -122,10 +113,8 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey)
     EXPECT_EQ(loadError("insertOpts", "num_particles = 7"), "no error");
 }
 
-namespace
-{
-void buildMap(CRFIDTagParticleMap& m, rfir::maps::TTagEstimatorKind kind, double x1)
-{
+namespace {
+void buildMap(CRFIDTagParticleMap& m, rfir::maps::TTagEstimatorKind kind, double x1) {
     m.insertionOptions.estimator = kind;
     m.insertionOptions.numParticles = 40;
     m.insertionOptions.lag = 7;
@@ -135,12 +124,10 @@ void buildMap(CRFIDTagParticleMap& m, rfir::maps::TTagEstimatorKind kind, double
         m.insertObservation(*sense(ring(0.05), tags, p), pose3(p));
 }
 
-void expectSame(const CRFIDTagParticleMap& a, const CRFIDTagParticleMap& b)
-{
+void expectSame(const CRFIDTagParticleMap& a, const CRFIDTagParticleMap& b) {
     ASSERT_EQ(a.tagCount(), b.tagCount());
     const auto ta = a.tags(), tb = b.tags();
-    for (size_t i = 0; i < ta.size(); i++)
-    {
+    for (size_t i = 0; i < ta.size(); i++) {
         EXPECT_EQ(ta[i]->id, tb[i]->id);
         EXPECT_EQ(ta[i]->detections, tb[i]->detections);
         EXPECT_EQ(ta[i]->visits, tb[i]->visits);
@@ -149,8 +136,7 @@ void expectSame(const CRFIDTagParticleMap& a, const CRFIDTagParticleMap& b)
         EXPECT_EQ(ta[i]->estimate.cov(0, 1), tb[i]->estimate.cov(0, 1));
         const auto &pa = ta[i]->particles(), &pb = tb[i]->particles();
         ASSERT_EQ(pa.size(), pb.size());
-        for (size_t k = 0; k < pa.size(); k++)
-        {
+        for (size_t k = 0; k < pa.size(); k++) {
             EXPECT_EQ(pa[k].x, pb[k].x);
             EXPECT_EQ(pa[k].y, pb[k].y);
         }
@@ -160,11 +146,9 @@ void expectSame(const CRFIDTagParticleMap& a, const CRFIDTagParticleMap& b)
 }
 }  // namespace
 
-TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically)
-{
+TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically) {
     for (auto kind : {rfir::maps::TTagEstimatorKind::ParticleFilter,
-                      rfir::maps::TTagEstimatorKind::FixedLagSmoother})
-    {
+                      rfir::maps::TTagEstimatorKind::FixedLagSmoother}) {
         CRFIDTagParticleMap a;
         a.likelihoodOptions.robotUpdate = rfir::maps::TRobotUpdatePolicy::Revisit;
         a.insertionOptions.rougheningSigma = 0.001;
@@ -178,11 +162,11 @@ TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically)
         EXPECT_EQ(b.insertionOptions.estimator, kind);
         EXPECT_EQ(b.insertionOptions.lag, 7u);
         EXPECT_EQ(b.insertionOptions.rougheningSigma, 0.001);
-        EXPECT_EQ(b.likelihoodOptions.robotUpdate, rfir::maps::TRobotUpdatePolicy::Revisit);
+        EXPECT_EQ(b.likelihoodOptions.robotUpdate,
+                  rfir::maps::TRobotUpdatePolicy::Revisit);
         // Both copies continue identically (per-step generators from the seed).
         const auto tags = grid(3, 0.25);
-        for (const auto& p : lawnmower(0.0, 0.6, 0.05, 0.5, 0.1, 0.03))
-        {
+        for (const auto& p : lawnmower(0.0, 0.6, 0.05, 0.5, 0.1, 0.03)) {
             const auto o = sense(ring(0.05), tags, p);
             EXPECT_EQ(a.computeObservationLikelihood(*o, pose3(p)),
                       b.computeObservationLikelihood(*o, pose3(p)));
@@ -193,8 +177,7 @@ TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically)
     }
 }
 
-TEST(TagMapIo, MultiMetricMapCopyKeepsTheMap)
-{
+TEST(TagMapIo, MultiMetricMapCopyKeepsTheMap) {
     rfir::maps::registerAllClasses();
     mrpt::config::CConfigFileMemory cfg(kIni);
     mrpt::maps::TSetOfMetricMapInitializers defs;
@@ -210,8 +193,7 @@ TEST(TagMapIo, MultiMetricMapCopyKeepsTheMap)
     expectSame(*a, *b);
 }
 
-TEST(TagMapIo, TextFileAndVisualization)
-{
+TEST(TagMapIo, TextFileAndVisualization) {
     CRFIDTagParticleMap m;
     buildMap(m, rfir::maps::TTagEstimatorKind::ParticleFilter, 0.6);
     const std::string prefix = std::string(RFIR_BINARY_DIR) + "/test_tagmaps_out";
@@ -220,8 +202,7 @@ TEST(TagMapIo, TextFileAndVisualization)
     ASSERT_TRUE(f.good());
     std::string line;
     size_t n = 0;
-    while (std::getline(f, line))
-    {
+    while (std::getline(f, line)) {
         if (line.empty() || line[0] == '#') continue;
         std::istringstream ss(line);
         std::string kind, id;

@@ -18,11 +18,9 @@ using namespace tagmaps_test;
 using rfir::maps::CRFIDTagParticleMap;
 using rfir::maps::TRobotUpdatePolicy;
 
-namespace
-{
+namespace {
 rfir::obs::CObservationRFIDReaders::Ptr oneRead(const std::string& tag, double h = 0.03,
-                                               double rx = 0.1, double ry = 0.0)
-{
+                                                double rx = 0.1, double ry = 0.0) {
     auto o = rfir::obs::CObservationRFIDReaders::Create();
     rfir::obs::CObservationRFIDReaders::TReading rd;
     rd.reader = reader("A", rx, ry, h);
@@ -32,8 +30,7 @@ rfir::obs::CObservationRFIDReaders::Ptr oneRead(const std::string& tag, double h
 }
 }  // namespace
 
-TEST(TagMap, NewTagSpreadsOverTheObservedReader)
-{
+TEST(TagMap, NewTagSpreadsOverTheObservedReader) {
     CRFIDTagParticleMap m;
     // Geometry always comes from the observation: a 0.3 x 0.06 reader.
     auto o = rfir::obs::CObservationRFIDReaders::Create();
@@ -60,8 +57,7 @@ TEST(TagMap, NewTagSpreadsOverTheObservedReader)
     EXPECT_THROW(m.insertObservation(*bad, pose3({0, 0, 0})), std::exception);
 }
 
-TEST(TagMap, UpdateTouchesOnlyDetectedTags)
-{
+TEST(TagMap, UpdateTouchesOnlyDetectedTags) {
     CRFIDTagParticleMap m;
     m.insertionOptions.numParticles = 20;
     for (int i = 0; i < 3000; i++)
@@ -77,8 +73,7 @@ TEST(TagMap, UpdateTouchesOnlyDetectedTags)
     EXPECT_EQ(m.getTag("T18")->detections, 1u);
 }
 
-TEST(TagMap, LikelihoodIsLowerForAShiftedRobot)
-{
+TEST(TagMap, LikelihoodIsLowerForAShiftedRobot) {
     // Map 4 tags/m^2 with exact poses, then score a fresh pass.
     const auto readers = ring(0.03);
     const auto tags = grid(6, 0.25);
@@ -93,13 +88,11 @@ TEST(TagMap, LikelihoodIsLowerForAShiftedRobot)
     double atTruth = 0;
     std::vector<double> shifted(shifts.size(), 0.0);
     int scored = 0;
-    for (const auto& p : lawnmower(0.0, 1.3, 0.02, 1.3, 0.11, 0.037))
-    {
+    for (const auto& p : lawnmower(0.0, 1.3, 0.02, 1.3, 0.11, 0.037)) {
         const auto o = sense(readers, tags, p);
         if (o->detectionCount() == 0) continue;
         atTruth += m.computeObservationLikelihood(*o, pose3(p));
-        for (size_t k = 0; k < shifts.size(); k++)
-        {
+        for (size_t k = 0; k < shifts.size(); k++) {
             const double s = m.computeObservationLikelihood(*o, pose3(p + shifts[k]));
             EXPECT_TRUE(std::isfinite(s));
             shifted[k] += s;
@@ -114,8 +107,7 @@ TEST(TagMap, LikelihoodIsLowerForAShiftedRobot)
     EXPECT_TRUE(std::isfinite(m.computeObservationLikelihood(*o, pose3({50, -40, 2}))));
 }
 
-TEST(TagMap, LikelihoodIsThreadSafe)
-{
+TEST(TagMap, LikelihoodIsThreadSafe) {
     const auto readers = ring(0.03);
     const auto tags = grid(4, 0.25);
     CRFIDTagParticleMap m;
@@ -136,20 +128,18 @@ TEST(TagMap, LikelihoodIsThreadSafe)
     EXPECT_EQ(serial, parallel);
 }
 
-TEST(TagMap, RobotUpdatePolicies)
-{
+TEST(TagMap, RobotUpdatePolicies) {
     const auto far = pose3({3.0, 0.0, 0.0});  // a pose that disagrees strongly
-    for (auto policy :
-         {TRobotUpdatePolicy::Literal, TRobotUpdatePolicy::Revisit, TRobotUpdatePolicy::RevisitAll})
-    {
+    for (auto policy : {TRobotUpdatePolicy::Literal, TRobotUpdatePolicy::Revisit,
+                        TRobotUpdatePolicy::RevisitAll}) {
         CRFIDTagParticleMap m;
         m.likelihoodOptions.robotUpdate = policy;
         EXPECT_EQ(m.updateTagsBeforeWeighing(), policy == TRobotUpdatePolicy::Literal);
         const auto o = oneRead("T");
-        m.insertObservation(*o, pose3({0, 0, 0}));          // first read
+        m.insertObservation(*o, pose3({0, 0, 0}));  // first read
         const double consecutive = m.computeObservationLikelihood(*o, far);
         EXPECT_FALSE(m.isNewVisit("T"));
-        m.insertObservation(*o, pose3({0, 0, 0}));          // still the first pass
+        m.insertObservation(*o, pose3({0, 0, 0}));            // still the first pass
         m.insertObservation(*oneRead(""), pose3({1, 0, 0}));  // tag out of view
         EXPECT_TRUE(m.isNewVisit("T"));
         const double revisit = m.computeObservationLikelihood(*o, far);
@@ -157,13 +147,10 @@ TEST(TagMap, RobotUpdatePolicies)
         m.insertObservation(*o, pose3({0, 0, 0}));  // second visit starts
         EXPECT_EQ(m.getTag("T")->visits, 2u);
         const double within = m.computeObservationLikelihood(*o, far);
-        if (policy == TRobotUpdatePolicy::Literal)
-        {
+        if (policy == TRobotUpdatePolicy::Literal) {
             EXPECT_LT(consecutive, -100.0);  // every read weighs the robot
             EXPECT_LT(within, -100.0);
-        }
-        else
-        {
+        } else {
             EXPECT_EQ(consecutive, 0.0) << "consecutive reads of the first pass ignored";
             if (policy == TRobotUpdatePolicy::Revisit)
                 EXPECT_EQ(within, 0.0);
@@ -182,8 +169,7 @@ TEST(TagMap, RobotUpdatePolicies)
     EXPECT_LT(m.computeObservationLikelihood(*oneRead("T"), far), -100.0);
 }
 
-TEST(TagMap, RangeBearingLandmarks)
-{
+TEST(TagMap, RangeBearingLandmarks) {
     CRFIDTagParticleMap m;
     m.setLandmarkNames({"L0", "L1", ""});
     m.insertionOptions.estimator = rfir::maps::TTagEstimatorKind::FixedLagSmoother;
@@ -199,16 +185,18 @@ TEST(TagMap, RangeBearingLandmarks)
         double r, b;
         rfir::models::predictRangeBearing(s, truth, r, b);
         mrpt::obs::CObservationBearingRange::TMeasurement z;
-        z.range = static_cast<float>(r + rb.sigmaRange * noise.drawGaussian1D_normalized());
-        z.yaw = static_cast<float>(b + rb.sigmaBearing * noise.drawGaussian1D_normalized());
+        z.range =
+            static_cast<float>(r + rb.sigmaRange * noise.drawGaussian1D_normalized());
+        z.yaw =
+            static_cast<float>(b + rb.sigmaBearing * noise.drawGaussian1D_normalized());
         z.pitch = 0;
         z.landmarkID = id;
         o->sensedData.push_back(z);
         return o;
     };
-    for (int k = 0; k < 40; k++)
-    {
-        const mrpt::math::TPose2D robot(0.8 + 0.01 * k, 0.1 * std::sin(k * 0.3), 0.4 - 0.02 * k);
+    for (int k = 0; k < 40; k++) {
+        const mrpt::math::TPose2D robot(0.8 + 0.01 * k, 0.1 * std::sin(k * 0.3),
+                                        0.4 - 0.02 * k);
         m.insertObservation(*observe(robot, 1), pose3(robot));
     }
     m.insertObservation(*observe({1.0, 0.0, 0.3}, 2), pose3({1.0, 0.0, 0.3}));
@@ -216,7 +204,8 @@ TEST(TagMap, RangeBearingLandmarks)
     ASSERT_EQ(m.landmarkCount(), 3u);
     const auto* l = m.getLandmark("L1");
     ASSERT_NE(l, nullptr);
-    const double err = std::hypot(l->estimate.mean.x - truth.x, l->estimate.mean.y - truth.y);
+    const double err =
+        std::hypot(l->estimate.mean.x - truth.x, l->estimate.mean.y - truth.y);
     std::printf("[range-bearing, PS, 40 reads, exact poses] landmark error %.1f mm\n",
                 err * 1e3);
     EXPECT_LT(err, 0.015);

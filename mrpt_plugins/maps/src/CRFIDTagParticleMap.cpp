@@ -14,22 +14,21 @@ using namespace rfir::maps;
 using rfir::models::PointEstimate;
 using rfir::models::ReaderArea;
 
-const std::vector<mrpt::math::TPoint2D>& CRFIDTagParticleMap::TTagEntry::particles() const
-{
-    return std::visit([](const auto& e) -> const std::vector<mrpt::math::TPoint2D>& {
-        return e.particles();
-    }, estimator);
+const std::vector<mrpt::math::TPoint2D>& CRFIDTagParticleMap::TTagEntry::particles()
+    const {
+    return std::visit(
+        [](const auto& e) -> const std::vector<mrpt::math::TPoint2D>& {
+            return e.particles();
+        },
+        estimator);
 }
 
-namespace rfir::maps
-{
-struct CRFIDTagParticleMapImpl
-{
+namespace rfir::maps {
+struct CRFIDTagParticleMapImpl {
     using Map = CRFIDTagParticleMap;
     using Entry = Map::TTagEntry;
 
-    static uint32_t stepSeed(uint64_t seed, uint64_t salt)
-    {
+    static uint32_t stepSeed(uint64_t seed, uint64_t salt) {
         // splitmix64: decorrelates consecutive steps; the generator depends only
         // on (seed, step), so serialized copies continue identically.
         uint64_t z = seed * 0x9E3779B97F4A7C15ULL + salt + 0x632BE59BD9B4E019ULL;
@@ -38,10 +37,8 @@ struct CRFIDTagParticleMapImpl
         return static_cast<uint32_t>((z ^ (z >> 31)) & 0xFFFFFFFFULL);
     }
 
-    static Map::TEstimator makeEstimator(const Map::TInsertionOptions& o)
-    {
-        if (o.estimator == TTagEstimatorKind::ParticleFilter)
-        {
+    static Map::TEstimator makeEstimator(const Map::TInsertionOptions& o) {
+        if (o.estimator == TTagEstimatorKind::ParticleFilter) {
             rfir::models::TagParticleFilterParams p;
             p.numParticles = o.numParticles;
             p.resampling = o.resampling;
@@ -59,18 +56,15 @@ struct CRFIDTagParticleMapImpl
 
     /** Re-weigh/resample an entry's estimator with a likelihood, refresh cache. */
     static void update(Entry& e, const rfir::models::PointLogLikelihood& f,
-                       mrpt::random::CRandomGenerator& rng)
-    {
+                       mrpt::random::CRandomGenerator& rng) {
         std::visit([&](auto& est) { est.update(f, rng); }, e.estimator);
         e.estimate = std::visit([](auto& est) { return est.estimate(); }, e.estimator);
     }
 
     /** Marks a read at `step`; starts a new visit (freezing the estimate) if the
      * entry was absent from >= minGap observations. */
-    static void markRead(Entry& e, uint64_t step, size_t minGap, size_t reads)
-    {
-        if (e.visits == 0 || step - 1 - e.lastReadStep >= minGap)
-        {
+    static void markRead(Entry& e, uint64_t step, size_t minGap, size_t reads) {
+        if (e.visits == 0 || step - 1 - e.lastReadStep >= minGap) {
             e.visits++;
             e.visitStartEstimate = e.estimate;
         }
@@ -80,8 +74,7 @@ struct CRFIDTagParticleMapImpl
 
     /** Which estimate (if any) weighs the robot for a read of `e`, per policy. */
     static const PointEstimate* estimateForRobot(const Map& m, const Entry& e,
-                                                 uint64_t stepsSoFar)
-    {
+                                                 uint64_t stepsSoFar) {
         const auto& lo = m.likelihoodOptions;
         if (lo.robotUpdate == TRobotUpdatePolicy::Literal) return &e.estimate;
         // Called before this observation is inserted: e.lastReadStep <= stepsSoFar.
@@ -92,8 +85,7 @@ struct CRFIDTagParticleMapImpl
         return nullptr;  // consecutive re-read (or first pass): nothing new
     }
 
-    static ReaderArea area(const rfir::obs::TRFIDReader& r)
-    {
+    static ReaderArea area(const rfir::obs::TRFIDReader& r) {
         if (!(r.halfX > 0) || !(r.halfY > 0))
             throw std::runtime_error("CRFIDTagParticleMap: reader '" + r.id +
                                      "' has a non-positive half-size");
@@ -101,27 +93,23 @@ struct CRFIDTagParticleMapImpl
     }
 
     static void insertRFID(Map& m, const rfir::obs::CObservationRFIDReaders& o,
-                           const mrpt::math::TPose2D& robot)
-    {
+                           const mrpt::math::TPose2D& robot) {
         const uint64_t step = ++m.m_rfidSteps;
         mrpt::random::CRandomGenerator rng(stepSeed(m.insertionOptions.seed, 2 * step));
         // Group the readers that read each tag at this instant (order kept).
         std::vector<std::pair<std::string, std::vector<ReaderArea>>> groups;
         std::unordered_map<std::string, size_t> where;
         for (const auto& rd : o.readings)
-            for (const auto& id : rd.tags)
-            {
+            for (const auto& id : rd.tags) {
                 auto [it, isNew] = where.emplace(id, groups.size());
                 if (isNew) groups.push_back({id, {}});
                 groups[it->second].second.push_back(area(rd.reader));
             }
         const rfir::models::DetectionLikelihood det(m.likelihoodOptions.detection);
-        for (auto& [id, areas] : groups)
-        {
+        for (auto& [id, areas] : groups) {
             auto it = m.m_tags.find(id);
             size_t first = 0;
-            if (it == m.m_tags.end())
-            {
+            if (it == m.m_tags.end()) {
                 // New tag: particles over the first detecting reader (geometry
                 // from the observation), weighed by any other reader.
                 Entry e;
@@ -129,29 +117,30 @@ struct CRFIDTagParticleMapImpl
                 e.estimator = makeEstimator(m.insertionOptions);
                 std::visit([&](auto& est) { est.initUniform(robot, areas[0], rng); },
                            e.estimator);
-                e.estimate = std::visit([](auto& est) { return est.estimate(); },
-                                        e.estimator);
+                e.estimate =
+                    std::visit([](auto& est) { return est.estimate(); }, e.estimator);
                 it = m.m_tags.emplace(id, std::move(e)).first;
                 first = 1;
             }
             Entry& e = it->second;
             markRead(e, step, m.likelihoodOptions.revisitMinGap, areas.size());
-            if (first < areas.size())
-            {
+            if (first < areas.size()) {
                 const std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
-                update(e, [&](const mrpt::math::TPoint2D& p) {
-                    double s = 0;
-                    for (const auto& a : rest) s += det.logLikelihood(robot, a, p);
-                    return s;
-                }, rng);
+                update(
+                    e,
+                    [&](const mrpt::math::TPoint2D& p) {
+                        double s = 0;
+                        for (const auto& a : rest) s += det.logLikelihood(robot, a, p);
+                        return s;
+                    },
+                    rng);
             }
             m.m_lastTouched++;
         }
     }
 
     static mrpt::math::TPose2D sensorPose(const mrpt::obs::CObservationBearingRange& o,
-                                          const mrpt::math::TPose2D& robot)
-    {
+                                          const mrpt::math::TPose2D& robot) {
         const auto& s = o.sensorLocationOnRobot;
         const double c = std::cos(robot.phi), sn = std::sin(robot.phi);
         return {robot.x + c * s.x() - sn * s.y(), robot.y + sn * s.x() + c * s.y(),
@@ -159,18 +148,16 @@ struct CRFIDTagParticleMapImpl
     }
 
     static void insertRB(Map& m, const mrpt::obs::CObservationBearingRange& o,
-                         const mrpt::math::TPose2D& robot)
-    {
+                         const mrpt::math::TPose2D& robot) {
         const uint64_t step = ++m.m_rbSteps;
-        mrpt::random::CRandomGenerator rng(stepSeed(m.insertionOptions.seed, 2 * step + 1));
+        mrpt::random::CRandomGenerator rng(
+            stepSeed(m.insertionOptions.seed, 2 * step + 1));
         const auto sensor = sensorPose(o, robot);
         const auto& rb = m.likelihoodOptions.rangeBearing;
-        for (const auto& z : o.sensedData)
-        {
+        for (const auto& z : o.sensedData) {
             const std::string id = m.landmarkName(z.landmarkID);
             auto it = m.m_landmarks.find(id);
-            if (it == m.m_landmarks.end())
-            {
+            if (it == m.m_landmarks.end()) {
                 // New landmark: samples of the noisy inverse model.
                 Entry e;
                 e.id = id;
@@ -179,29 +166,28 @@ struct CRFIDTagParticleMapImpl
                     sensor, z.range, z.yaw, rb, m.insertionOptions.numParticles, rng);
                 std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
                            e.estimator);
-                e.estimate = std::visit([](auto& est) { return est.estimate(); },
-                                        e.estimator);
+                e.estimate =
+                    std::visit([](auto& est) { return est.estimate(); }, e.estimator);
                 markRead(e, step, m.likelihoodOptions.revisitMinGap, 1);
                 m.m_landmarks.emplace(id, std::move(e));
-            }
-            else
-            {
+            } else {
                 markRead(it->second, step, m.likelihoodOptions.revisitMinGap, 1);
-                update(it->second, [&](const mrpt::math::TPoint2D& p) {
-                    return rfir::models::rangeBearingLogLikelihood(sensor, p, z.range,
-                                                                   z.yaw, rb);
-                }, rng);
+                update(
+                    it->second,
+                    [&](const mrpt::math::TPoint2D& p) {
+                        return rfir::models::rangeBearingLogLikelihood(sensor, p, z.range,
+                                                                       z.yaw, rb);
+                    },
+                    rng);
             }
             m.m_lastTouched++;
         }
     }
 
     static double rbLogLik(const Map& m, const PointEstimate& est,
-                           const mrpt::math::TPose2D& sensor, double range, double yaw)
-    {
+                           const mrpt::math::TPose2D& sensor, double range, double yaw) {
         auto p = m.likelihoodOptions.rangeBearing;
-        if (m.likelihoodOptions.rbUseLandmarkCov)
-        {
+        if (m.likelihoodOptions.rbUseLandmarkCov) {
             // Linearised: landmark covariance projected on the range and
             // bearing directions, added to the sensor noise.
             double r, b;
@@ -224,22 +210,19 @@ using Impl = rfir::maps::CRFIDTagParticleMapImpl;
 CRFIDTagParticleMap::CRFIDTagParticleMap() = default;
 
 const CRFIDTagParticleMap::TTagEntry* CRFIDTagParticleMap::getTag(
-    const std::string& id) const
-{
+    const std::string& id) const {
     const auto it = m_tags.find(id);
     return it == m_tags.end() ? nullptr : &it->second;
 }
 
 const CRFIDTagParticleMap::TTagEntry* CRFIDTagParticleMap::getLandmark(
-    const std::string& id) const
-{
+    const std::string& id) const {
     const auto it = m_landmarks.find(id);
     return it == m_landmarks.end() ? nullptr : &it->second;
 }
 
 static std::vector<const CRFIDTagParticleMap::TTagEntry*> sortedEntries(
-    const std::unordered_map<std::string, CRFIDTagParticleMap::TTagEntry>& t)
-{
+    const std::unordered_map<std::string, CRFIDTagParticleMap::TTagEntry>& t) {
     std::vector<const CRFIDTagParticleMap::TTagEntry*> v;
     v.reserve(t.size());
     for (const auto& kv : t) v.push_back(&kv.second);
@@ -247,47 +230,43 @@ static std::vector<const CRFIDTagParticleMap::TTagEntry*> sortedEntries(
     return v;
 }
 
-std::vector<const CRFIDTagParticleMap::TTagEntry*> CRFIDTagParticleMap::tags() const
-{
+std::vector<const CRFIDTagParticleMap::TTagEntry*> CRFIDTagParticleMap::tags() const {
     return sortedEntries(m_tags);
 }
 
-std::vector<const CRFIDTagParticleMap::TTagEntry*> CRFIDTagParticleMap::landmarks() const
-{
+std::vector<const CRFIDTagParticleMap::TTagEntry*> CRFIDTagParticleMap::landmarks()
+    const {
     return sortedEntries(m_landmarks);
 }
 
-bool CRFIDTagParticleMap::updateTagsBeforeWeighing() const
-{
+bool CRFIDTagParticleMap::updateTagsBeforeWeighing() const {
     return likelihoodOptions.robotUpdate == TRobotUpdatePolicy::Literal;
 }
 
-std::string CRFIDTagParticleMap::landmarkName(int32_t id) const
-{
+std::string CRFIDTagParticleMap::landmarkName(int32_t id) const {
     if (id >= 0 && static_cast<size_t>(id) < m_landmarkNames.size() &&
         !m_landmarkNames[id].empty())
         return m_landmarkNames[id];
     return std::to_string(id);
 }
 
-bool CRFIDTagParticleMap::isNewVisit(const std::string& tagId) const
-{
+bool CRFIDTagParticleMap::isNewVisit(const std::string& tagId) const {
     const TTagEntry* e = getTag(tagId);
     return e && m_rfidSteps - e->lastReadStep >= likelihoodOptions.revisitMinGap;
 }
 
 double CRFIDTagParticleMap::detectionLogLikelihood(const TTagEntry& tag,
                                                    const mrpt::math::TPose2D& robot,
-                                                   const ReaderArea& r) const
-{
+                                                   const ReaderArea& r) const {
     return rfir::models::DetectionLikelihood(likelihoodOptions.detection)
         .logLikelihood(robot, r, tag.estimate.mean);
 }
 
-bool CRFIDTagParticleMap::isEmpty() const { return m_tags.empty() && m_landmarks.empty(); }
+bool CRFIDTagParticleMap::isEmpty() const {
+    return m_tags.empty() && m_landmarks.empty();
+}
 
-void CRFIDTagParticleMap::internal_clear()
-{
+void CRFIDTagParticleMap::internal_clear() {
     m_tags.clear();
     m_landmarks.clear();
     m_rfidSteps = m_rbSteps = 0;
@@ -296,19 +275,17 @@ void CRFIDTagParticleMap::internal_clear()
 }
 
 bool CRFIDTagParticleMap::internal_insertObservation(
-    const mrpt::obs::CObservation& obs, const std::optional<const mrpt::poses::CPose3D>& pose)
-{
+    const mrpt::obs::CObservation& obs,
+    const std::optional<const mrpt::poses::CPose3D>& pose) {
     const mrpt::poses::CPose3D p = pose ? *pose : mrpt::poses::CPose3D();
     const mrpt::math::TPose2D robot(p.x(), p.y(), p.yaw());
     m_lastTouched = 0;
     bool done = false;
-    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs))
-    {
+    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs)) {
         Impl::insertRFID(*this, *o, robot);
         done = true;
-    }
-    else if (const auto* b = dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs))
-    {
+    } else if (const auto* b =
+                   dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs)) {
         Impl::insertRB(*this, *b, robot);
         done = true;
     }
@@ -317,40 +294,37 @@ bool CRFIDTagParticleMap::internal_insertObservation(
 }
 
 bool CRFIDTagParticleMap::internal_canComputeObservationLikelihood(
-    const mrpt::obs::CObservation& obs) const
-{
+    const mrpt::obs::CObservation& obs) const {
     return dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs) ||
            dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs);
 }
 
 double CRFIDTagParticleMap::internal_computeObservationLikelihood(
-    const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const
-{
+    const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const {
     // Read-only on the map (thread-safe): sums the log-likelihood of every read
     // of an already-mapped tag, the tag estimate against the reader placed by
     // this robot pose (SPEC section 2); the policy picks which reads count.
     const mrpt::math::TPose2D robot(takenFrom.x(), takenFrom.y(), takenFrom.yaw());
     double sum = 0;
-    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs))
-    {
+    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs)) {
         const rfir::models::DetectionLikelihood det(likelihoodOptions.detection);
         for (const auto& rd : o->readings)
-            for (const auto& id : rd.tags)
-            {
+            for (const auto& id : rd.tags) {
                 const auto it = m_tags.find(id);
                 if (it == m_tags.end()) continue;
-                const PointEstimate* est = Impl::estimateForRobot(*this, it->second, m_rfidSteps);
-                if (est) sum += det.logLikelihood(robot, Impl::area(rd.reader), est->mean);
+                const PointEstimate* est =
+                    Impl::estimateForRobot(*this, it->second, m_rfidSteps);
+                if (est)
+                    sum += det.logLikelihood(robot, Impl::area(rd.reader), est->mean);
             }
-    }
-    else if (const auto* b = dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs))
-    {
+    } else if (const auto* b =
+                   dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs)) {
         const auto sensor = Impl::sensorPose(*b, robot);
-        for (const auto& z : b->sensedData)
-        {
+        for (const auto& z : b->sensedData) {
             const auto it = m_landmarks.find(landmarkName(z.landmarkID));
             if (it == m_landmarks.end()) continue;
-            const PointEstimate* est = Impl::estimateForRobot(*this, it->second, m_rbSteps);
+            const PointEstimate* est =
+                Impl::estimateForRobot(*this, it->second, m_rbSteps);
             if (est) sum += Impl::rbLogLik(*this, *est, sensor, z.range, z.yaw);
         }
     }

@@ -19,27 +19,22 @@ using mrpt::serialization::CArchive;
 
 IMPLEMENTS_SERIALIZABLE(CRFIDTagParticleMap, CMetricMap, rfir::maps)
 
-namespace
-{
-void writePts(CArchive& a, const std::vector<TPoint2D>& v)
-{
+namespace {
+void writePts(CArchive& a, const std::vector<TPoint2D>& v) {
     a.WriteAs<uint64_t>(v.size());
     for (const auto& p : v) a << p.x << p.y;
 }
-std::vector<TPoint2D> readPts(CArchive& a)
-{
+std::vector<TPoint2D> readPts(CArchive& a) {
     const auto n = a.ReadAs<uint64_t>();
     if (n > (1ULL << 32)) throw std::runtime_error("CRFIDTagParticleMap: corrupt size");
     std::vector<TPoint2D> v(n);
     for (auto& p : v) a >> p.x >> p.y;
     return v;
 }
-void writeEst(CArchive& a, const rfir::models::PointEstimate& e)
-{
+void writeEst(CArchive& a, const rfir::models::PointEstimate& e) {
     a << e.mean.x << e.mean.y << e.cov(0, 0) << e.cov(0, 1) << e.cov(1, 1);
 }
-rfir::models::PointEstimate readEst(CArchive& a)
-{
+rfir::models::PointEstimate readEst(CArchive& a) {
     rfir::models::PointEstimate e;
     double c01;
     a >> e.mean.x >> e.mean.y >> e.cov(0, 0) >> c01 >> e.cov(1, 1);
@@ -47,11 +42,9 @@ rfir::models::PointEstimate readEst(CArchive& a)
     return e;
 }
 
-void writeEstimator(CArchive& a, const CRFIDTagParticleMap::TEstimator& est)
-{
+void writeEstimator(CArchive& a, const CRFIDTagParticleMap::TEstimator& est) {
     a.WriteAs<uint8_t>(est.index());
-    if (const auto* pf = std::get_if<rfir::models::TagParticleFilter>(&est))
-    {
+    if (const auto* pf = std::get_if<rfir::models::TagParticleFilter>(&est)) {
         const auto& p = pf->params();
         a.WriteAs<uint64_t>(p.numParticles);
         a.WriteAs<uint8_t>(static_cast<uint8_t>(p.resampling));
@@ -75,11 +68,9 @@ void writeEstimator(CArchive& a, const CRFIDTagParticleMap::TEstimator& est)
 }
 
 CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a,
-                                              const rfir::models::PointEstimate& est)
-{
+                                              const rfir::models::PointEstimate& est) {
     const auto kind = a.ReadAs<uint8_t>();
-    if (kind == 0)
-    {
+    if (kind == 0) {
         rfir::models::TagParticleFilterParams p;
         p.numParticles = a.ReadAs<uint64_t>();
         p.resampling = static_cast<rfir::models::ResamplingScheme>(a.ReadAs<uint8_t>());
@@ -92,7 +83,8 @@ CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a,
         pf.setState(p, std::move(pts), std::move(w), upd, est);
         return pf;
     }
-    if (kind != 1) throw std::runtime_error("CRFIDTagParticleMap: unknown estimator kind");
+    if (kind != 1)
+        throw std::runtime_error("CRFIDTagParticleMap: unknown estimator kind");
     rfir::models::TagFixedLagSmootherParams p;
     p.numParticles = a.ReadAs<uint64_t>();
     p.lag = a.ReadAs<uint64_t>();
@@ -108,11 +100,10 @@ CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a,
     return ps;
 }
 
-void writeEntries(CArchive& a, const std::vector<const CRFIDTagParticleMap::TTagEntry*>& v)
-{
+void writeEntries(CArchive& a,
+                  const std::vector<const CRFIDTagParticleMap::TTagEntry*>& v) {
     a.WriteAs<uint64_t>(v.size());
-    for (const auto* e : v)
-    {
+    for (const auto* e : v) {
         a << e->id;
         a.WriteAs<uint64_t>(e->detections);
         a.WriteAs<uint64_t>(e->visits);
@@ -124,12 +115,10 @@ void writeEntries(CArchive& a, const std::vector<const CRFIDTagParticleMap::TTag
 }
 
 template <class TABLE>
-void readEntries(CArchive& a, TABLE& t)
-{
+void readEntries(CArchive& a, TABLE& t) {
     t.clear();
     const auto n = a.ReadAs<uint64_t>();
-    for (uint64_t i = 0; i < n; i++)
-    {
+    for (uint64_t i = 0; i < n; i++) {
         CRFIDTagParticleMap::TTagEntry e;
         a >> e.id;
         e.detections = a.ReadAs<uint64_t>();
@@ -145,10 +134,11 @@ void readEntries(CArchive& a, TABLE& t)
 }
 }  // namespace
 
-uint8_t CRFIDTagParticleMap::serializeGetVersion() const { return 0; }
+uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
+    return 0;
+}
 
-void CRFIDTagParticleMap::serializeTo(CArchive& out) const
-{
+void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << genericMapParams;
     const auto& io = insertionOptions;
     out.WriteAs<uint8_t>(static_cast<uint8_t>(io.estimator));
@@ -172,22 +162,21 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const
     writeEntries(out, landmarks());
 }
 
-void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version)
-{
-    switch (version)
-    {
-        case 0:
-        {
+void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
+    switch (version) {
+        case 0: {
             in >> genericMapParams;
             auto& io = insertionOptions;
             io.estimator = static_cast<TTagEstimatorKind>(in.ReadAs<uint8_t>());
             io.numParticles = in.ReadAs<uint64_t>();
             io.lag = in.ReadAs<uint64_t>();
             in >> io.smootherStepSigma >> io.rougheningSigma >> io.essThreshold;
-            io.resampling = static_cast<rfir::models::ResamplingScheme>(in.ReadAs<uint8_t>());
+            io.resampling =
+                static_cast<rfir::models::ResamplingScheme>(in.ReadAs<uint8_t>());
             io.seed = in.ReadAs<uint64_t>();
             auto& lo = likelihoodOptions;
-            lo.detection.model = static_cast<rfir::models::DetectionModel>(in.ReadAs<uint8_t>());
+            lo.detection.model =
+                static_cast<rfir::models::DetectionModel>(in.ReadAs<uint8_t>());
             in >> lo.detection.beta >> lo.detection.gaussianSigmaScale;
             in >> lo.rangeBearing.sigmaRange >> lo.rangeBearing.sigmaBearing;
             lo.robotUpdate = static_cast<TRobotUpdatePolicy>(in.ReadAs<uint8_t>());
@@ -200,22 +189,22 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version)
             m_lastTouched = 0;
             readEntries(in, m_tags);
             readEntries(in, m_landmarks);
-        }
-        break;
-        default: MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+        } break;
+        default:
+            MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     }
 }
 
-void CRFIDTagParticleMap::saveToTextFile(const std::string& path) const
-{
+void CRFIDTagParticleMap::saveToTextFile(const std::string& path) const {
     std::ostringstream ss;
     ss << std::setprecision(9);
     ss << "# rfir tag map: <kind> <id> <x> <y> <sx> <sy> (metres)\n";
     auto put = [&](const char* kind, const std::vector<const TTagEntry*>& v) {
         for (const auto* e : v)
             ss << kind << ' ' << e->id << ' ' << e->estimate.mean.x << ' '
-               << e->estimate.mean.y << ' ' << std::sqrt(std::max(0.0, e->estimate.cov(0, 0)))
-               << ' ' << std::sqrt(std::max(0.0, e->estimate.cov(1, 1))) << '\n';
+               << e->estimate.mean.y << ' '
+               << std::sqrt(std::max(0.0, e->estimate.cov(0, 0))) << ' '
+               << std::sqrt(std::max(0.0, e->estimate.cov(1, 1))) << '\n';
     };
     put("tag", tags());
     put("landmark", landmarks());
@@ -228,21 +217,19 @@ void CRFIDTagParticleMap::saveToTextFile(const std::string& path) const
         f.close();
         if (!f) throw std::runtime_error("error writing '" + tmp + "'");
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    {
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
         std::remove(tmp.c_str());
         throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "'");
     }
 }
 
 void CRFIDTagParticleMap::saveMetricMapRepresentationToFile(
-    const std::string& filNamePrefix) const
-{
+    const std::string& filNamePrefix) const {
     saveToTextFile(filNamePrefix + "_tags.txt");
 }
 
-void CRFIDTagParticleMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& outObj) const
-{
+void CRFIDTagParticleMap::getVisualizationInto(
+    mrpt::opengl::CSetOfObjects& outObj) const {
     if (!genericMapParams.enableSaveAs3DObject) return;
     auto addSet = [&](const std::vector<const TTagEntry*>& v, float r, float g, float b) {
         auto means = mrpt::opengl::CPointCloud::Create();
@@ -251,8 +238,7 @@ void CRFIDTagParticleMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& outO
         means->setColor(r, g, b);
         parts->setPointSize(1.5f);
         parts->setColor(r * 0.6f + 0.4f, g * 0.6f + 0.4f, b * 0.6f + 0.4f);
-        for (const auto* e : v)
-        {
+        for (const auto* e : v) {
             means->insertPoint(e->estimate.mean.x, e->estimate.mean.y, 0.001f);
             for (const auto& p : e->particles()) parts->insertPoint(p.x, p.y, 0.0f);
             auto ell = mrpt::opengl::CEllipsoid2D::Create();
@@ -269,8 +255,7 @@ void CRFIDTagParticleMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& outO
     addSet(landmarks(), 0.9f, 0.4f, 0.1f);
 }
 
-std::string CRFIDTagParticleMap::asString() const
-{
+std::string CRFIDTagParticleMap::asString() const {
     std::ostringstream s;
     s << "rfir::maps::CRFIDTagParticleMap: " << m_tags.size() << " tags, "
       << m_landmarks.size() << " landmarks ("

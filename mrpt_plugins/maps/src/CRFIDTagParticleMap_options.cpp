@@ -11,8 +11,7 @@ using namespace rfir::maps;
 MAP_DEFINITION_REGISTER("rfir::maps::CRFIDTagParticleMap,rfidTagMap",
                         rfir::maps::CRFIDTagParticleMap)
 
-namespace
-{
+namespace {
 const std::vector<std::string> kEstimatorNames = {"particle_filter",
                                                   "fixed_lag_smoother"};
 const std::vector<std::string> kResamplingNames = {"systematic", "stratified",
@@ -21,17 +20,15 @@ const std::vector<std::string> kModelNames = {"step", "gaussian"};
 const std::vector<std::string> kPolicyNames = {"literal", "revisit", "revisit_all"};
 }  // namespace
 
-const std::vector<std::string>& CRFIDTagParticleMap::TInsertionOptions::allowedKeys()
-{
+const std::vector<std::string>& CRFIDTagParticleMap::TInsertionOptions::allowedKeys() {
     static const std::vector<std::string> k = {
-        "estimator",       "num_particles",    "lag", "smoother_step_sigma",
-        "roughening_sigma", "ess_threshold",   "resampling", "seed"};
+        "estimator",        "num_particles", "lag",        "smoother_step_sigma",
+        "roughening_sigma", "ess_threshold", "resampling", "seed"};
     return k;
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
-    const mrpt::config::CConfigFileBase& c, const std::string& s)
-{
+    const mrpt::config::CConfigFileBase& c, const std::string& s) {
     rfir::checkIniKeys(c, s, allowedKeys());
     estimator = static_cast<TTagEstimatorKind>(rfir::readIniEnum(
         c, s, "estimator", kEstimatorNames, static_cast<size_t>(estimator)));
@@ -46,15 +43,16 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
         throw std::runtime_error("[" + s + "] ess_threshold: must be <= 1");
     resampling = static_cast<rfir::models::ResamplingScheme>(rfir::readIniEnum(
         c, s, "resampling", kResamplingNames, static_cast<size_t>(resampling)));
-    const double sd = rfir::readIniDouble(c, s, "seed", static_cast<double>(seed), 0.0, false);
+    const double sd =
+        rfir::readIniDouble(c, s, "seed", static_cast<double>(seed), 0.0, false);
     if (sd != static_cast<double>(static_cast<uint64_t>(sd)))
         throw std::runtime_error("[" + s + "] seed: must be a non-negative integer");
     seed = static_cast<uint64_t>(sd);
 }
 
-void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const
-{
-    o << "estimator           = " << kEstimatorNames[static_cast<size_t>(estimator)] << "\n"
+void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
+    o << "estimator           = " << kEstimatorNames[static_cast<size_t>(estimator)]
+      << "\n"
       << "num_particles       = " << numParticles << "\n"
       << "lag                 = " << lag << "\n"
       << "smoother_step_sigma = " << smootherStepSigma << "\n"
@@ -64,18 +62,17 @@ void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) c
       << "seed                = " << seed << "\n";
 }
 
-const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowedKeys()
-{
+const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowedKeys() {
     static const std::vector<std::string> k = {
-        "detection_model",      "beta",         "gaussian_sigma_scale",
-        "rb_sigma_range",       "rb_sigma_bearing_deg", "robot_update",
+        "detection_model",      "beta",
+        "gaussian_sigma_scale", "rb_sigma_range",
+        "rb_sigma_bearing_deg", "robot_update",
         "revisit_min_gap",      "rb_use_landmark_cov"};
     return k;
 }
 
 void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
-    const mrpt::config::CConfigFileBase& c, const std::string& s)
-{
+    const mrpt::config::CConfigFileBase& c, const std::string& s) {
     rfir::checkIniKeys(c, s, allowedKeys());
     detection.model = static_cast<rfir::models::DetectionModel>(rfir::readIniEnum(
         c, s, "detection_model", kModelNames, static_cast<size_t>(detection.model)));
@@ -84,8 +81,9 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
         c, s, "gaussian_sigma_scale", detection.gaussianSigmaScale, 0.0, true);
     rangeBearing.sigmaRange =
         rfir::readIniDouble(c, s, "rb_sigma_range", rangeBearing.sigmaRange, 0.0, true);
-    rangeBearing.sigmaBearing = mrpt::DEG2RAD(rfir::readIniDouble(
-        c, s, "rb_sigma_bearing_deg", mrpt::RAD2DEG(rangeBearing.sigmaBearing), 0.0, true));
+    rangeBearing.sigmaBearing = mrpt::DEG2RAD(
+        rfir::readIniDouble(c, s, "rb_sigma_bearing_deg",
+                            mrpt::RAD2DEG(rangeBearing.sigmaBearing), 0.0, true));
     robotUpdate = static_cast<TRobotUpdatePolicy>(rfir::readIniEnum(
         c, s, "robot_update", kPolicyNames, static_cast<size_t>(robotUpdate)));
     revisitMinGap = rfir::readIniPositiveInt(c, s, "revisit_min_gap", revisitMinGap);
@@ -93,8 +91,7 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
                                          rbUseLandmarkCov ? 1 : 0) == 1;
 }
 
-void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const
-{
+void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const {
     o << "detection_model      = " << kModelNames[static_cast<size_t>(detection.model)]
       << "\n"
       << "beta                 = " << detection.beta << "\n"
@@ -110,22 +107,19 @@ void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) 
 CRFIDTagParticleMap::TMapDefinition::TMapDefinition() = default;
 
 void CRFIDTagParticleMap::TMapDefinition::loadFromConfigFile_map_specific(
-    const mrpt::config::CConfigFileBase& source, const std::string& prefix)
-{
+    const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
     insertionOpts.loadFromConfigFile(source, prefix + "_insertOpts");
     likelihoodOpts.loadFromConfigFile(source, prefix + "_likelihoodOpts");
 }
 
 void CRFIDTagParticleMap::TMapDefinition::dumpToTextStream_map_specific(
-    std::ostream& out) const
-{
+    std::ostream& out) const {
     insertionOpts.dumpToTextStream(out);
     likelihoodOpts.dumpToTextStream(out);
 }
 
 mrpt::maps::CMetricMap* CRFIDTagParticleMap::internal_CreateFromMapDefinition(
-    const mrpt::maps::TMetricMapInitializer& d)
-{
+    const mrpt::maps::TMetricMapInitializer& d) {
     const auto& def = dynamic_cast<const CRFIDTagParticleMap::TMapDefinition&>(d);
     auto* m = new CRFIDTagParticleMap();
     m->insertionOptions = def.insertionOpts;

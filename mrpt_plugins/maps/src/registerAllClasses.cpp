@@ -6,10 +6,11 @@
 #include <mrpt/rtti/CObject.h>
 #include <rfir/obs/registerAllClasses.h>
 
-MRPT_INITIALIZER(registerAllClasses_rfir_maps) { rfir::maps::registerAllClasses(); }
+MRPT_INITIALIZER(registerAllClasses_rfir_maps) {
+    rfir::maps::registerAllClasses();
+}
 
-void rfir::maps::registerAllClasses()
-{
+void rfir::maps::registerAllClasses() {
     rfir::obs::registerAllClasses();
     mrpt::rtti::registerClass(CLASS_ID(rfir::maps::CRFIDTagParticleMap));
 }

@@ -3,11 +3,9 @@
 
 #include <cmath>
 
-namespace rfir::models
-{
+namespace rfir::models {
 double stepDetectionLogLikelihood(double ex, double ey, double hx, double hy,
-                                  double beta)
-{
+                                  double beta) {
     // Thesis eq. 3.7: flat (w = 1) inside the square |e_x|,|e_y| < sigma;
     // outside, a Gaussian tail scaled by beta so w is about 1 at the edge.
     // Rectangular readers: sigma per axis = half-size.
@@ -15,14 +13,12 @@ double stepDetectionLogLikelihood(double ex, double ey, double hx, double hy,
     return std::log(beta) - 0.5 * (ex * ex / (hx * hx) + ey * ey / (hy * hy));
 }
 
-double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy)
-{
+double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy) {
     return -0.5 * (ex * ex / (sx * sx) + ey * ey / (sy * sy));
 }
 
 double DetectionLikelihood::logLikelihoodOffset(double ex, double ey, double hx,
-                                                double hy) const
-{
+                                                double hy) const {
     if (m_p.model == DetectionModel::Step)
         return stepDetectionLogLikelihood(ex, ey, hx, hy, m_p.beta);
     const double k = m_p.gaussianSigmaScale;
@@ -30,8 +26,7 @@ double DetectionLikelihood::logLikelihoodOffset(double ex, double ey, double hx,
 }
 
 mrpt::math::TPoint2D readerCentreInWorld(const mrpt::math::TPose2D& robot,
-                                         const ReaderArea& r)
-{
+                                         const ReaderArea& r) {
     // 003 eq. 6: reader centre = robot position + R(theta) * reader offset.
     const double c = std::cos(robot.phi), s = std::sin(robot.phi);
     return {robot.x + c * r.x - s * r.y, robot.y + s * r.x + c * r.y};
@@ -39,8 +34,7 @@ mrpt::math::TPoint2D readerCentreInWorld(const mrpt::math::TPose2D& robot,
 
 double DetectionLikelihood::logLikelihood(const mrpt::math::TPose2D& robot,
                                           const ReaderArea& r,
-                                          const mrpt::math::TPoint2D& tag) const
-{
+                                          const mrpt::math::TPoint2D& tag) const {
     // e = tag - reader centre, expressed in the robot frame (thesis eq. 3.7).
     const double c = std::cos(robot.phi), s = std::sin(robot.phi);
     const double dx = tag.x - robot.x, dy = tag.y - robot.y;
@@ -51,8 +45,7 @@ double DetectionLikelihood::logLikelihood(const mrpt::math::TPose2D& robot,
 
 double DetectionLikelihood::likelihood(const mrpt::math::TPose2D& robot,
                                        const ReaderArea& r,
-                                       const mrpt::math::TPoint2D& tag) const
-{
+                                       const mrpt::math::TPoint2D& tag) const {
     return std::exp(logLikelihood(robot, r, tag));
 }
 

@@ -5,25 +5,20 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace rfir
-{
-namespace
-{
-std::string joined(const std::vector<std::string>& v)
-{
+namespace rfir {
+namespace {
+std::string joined(const std::vector<std::string>& v) {
     std::string s;
     for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
     return s;
 }
-std::string where(const std::string& section, const std::string& key)
-{
+std::string where(const std::string& section, const std::string& key) {
     return "[" + section + "] " + key;
 }
 }  // namespace
 
 void checkIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                  const std::vector<std::string>& allowedKeys)
-{
+                  const std::vector<std::string>& allowedKeys) {
     std::vector<std::string> keys;
     cfg.getAllKeys(section, keys);
     for (const auto& k : keys)
@@ -34,8 +29,7 @@ void checkIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& s
 
 size_t readIniEnum(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                    const std::string& key, const std::vector<std::string>& names,
-                   size_t defaultIndex)
-{
+                   size_t defaultIndex) {
     const std::string v = cfg.read_string(section, key, names.at(defaultIndex));
     const auto it = std::find(names.begin(), names.end(), v);
     if (it == names.end())
@@ -46,39 +40,31 @@ size_t readIniEnum(const mrpt::config::CConfigFileBase& cfg, const std::string& 
 
 size_t readIniPositiveInt(const mrpt::config::CConfigFileBase& cfg,
                           const std::string& section, const std::string& key,
-                          size_t defaultValue)
-{
+                          size_t defaultValue) {
     const std::string v = cfg.read_string(section, key, std::to_string(defaultValue));
     size_t pos = 0;
     long long x = 0;
-    try
-    {
+    try {
         x = std::stoll(v, &pos);
-    }
-    catch (const std::exception&)
-    {
+    } catch (const std::exception&) {
         pos = 0;
     }
     if (pos == 0 || pos != v.size() || x <= 0)
-        throw std::runtime_error(where(section, key) + ": expected a positive integer, got '" +
-                                 v + "'");
+        throw std::runtime_error(where(section, key) +
+                                 ": expected a positive integer, got '" + v + "'");
     return static_cast<size_t>(x);
 }
 
 double readIniDouble(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                      const std::string& key, double defaultValue, double minValue,
-                     bool strict)
-{
+                     bool strict) {
     const std::string v = cfg.read_string(section, key, "");
     if (v.empty()) return defaultValue;
     size_t pos = 0;
     double x = 0;
-    try
-    {
+    try {
         x = std::stod(v, &pos);
-    }
-    catch (const std::exception&)
-    {
+    } catch (const std::exception&) {
         pos = 0;
     }
     if (pos == 0 || pos != v.size() || !std::isfinite(x))

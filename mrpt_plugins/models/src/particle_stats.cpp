@@ -4,31 +4,26 @@
 
 #include <stdexcept>
 
-namespace rfir::models
-{
+namespace rfir::models {
 PointEstimate weightedEstimate(const std::vector<mrpt::math::TPoint2D>& pts,
-                               const std::vector<double>& logWeights)
-{
+                               const std::vector<double>& logWeights) {
     PointEstimate e;
     if (pts.empty()) return e;
     std::vector<double> w;
     if (logWeights.empty())
         w.assign(pts.size(), 1.0 / pts.size());
-    else
-    {
+    else {
         if (logWeights.size() != pts.size())
             throw std::invalid_argument("weightedEstimate: size mismatch");
         w = normalisedWeights(logWeights);
     }
     double mx = 0, my = 0;
-    for (size_t i = 0; i < pts.size(); i++)
-    {
+    for (size_t i = 0; i < pts.size(); i++) {
         mx += w[i] * pts[i].x;
         my += w[i] * pts[i].y;
     }
     double cxx = 0, cxy = 0, cyy = 0;
-    for (size_t i = 0; i < pts.size(); i++)
-    {
+    for (size_t i = 0; i < pts.size(); i++) {
         const double dx = pts[i].x - mx, dy = pts[i].y - my;
         cxx += w[i] * dx * dx;
         cxy += w[i] * dx * dy;

@@ -5,12 +5,10 @@
 
 #include <cmath>
 
-namespace rfir::models
-{
+namespace rfir::models {
 void predictRangeBearing(const mrpt::math::TPose2D& sensor,
                          const mrpt::math::TPoint2D& landmark, double& range,
-                         double& bearing)
-{
+                         double& bearing) {
     const double dx = landmark.x - sensor.x, dy = landmark.y - sensor.y;
     range = std::hypot(dx, dy);
     bearing = mrpt::math::wrapToPi(std::atan2(dy, dx) - sensor.phi);
@@ -18,8 +16,7 @@ void predictRangeBearing(const mrpt::math::TPose2D& sensor,
 
 double rangeBearingLogLikelihood(const mrpt::math::TPose2D& sensor,
                                  const mrpt::math::TPoint2D& landmark, double range,
-                                 double bearing, const RangeBearingParams& p)
-{
+                                 double bearing, const RangeBearingParams& p) {
     double r, b;
     predictRangeBearing(sensor, landmark, r, b);
     const double er = (range - r) / p.sigmaRange;
@@ -27,21 +24,19 @@ double rangeBearingLogLikelihood(const mrpt::math::TPose2D& sensor,
     return -0.5 * (er * er + eb * eb);
 }
 
-mrpt::math::TPoint2D rangeBearingToPoint(const mrpt::math::TPose2D& sensor,
-                                         double range, double bearing)
-{
+mrpt::math::TPoint2D rangeBearingToPoint(const mrpt::math::TPose2D& sensor, double range,
+                                         double bearing) {
     const double a = sensor.phi + bearing;
     return {sensor.x + range * std::cos(a), sensor.y + range * std::sin(a)};
 }
 
 std::vector<mrpt::math::TPoint2D> sampleRangeBearingInverse(
     const mrpt::math::TPose2D& sensor, double range, double bearing,
-    const RangeBearingParams& p, size_t n, mrpt::random::CRandomGenerator& rng)
-{
+    const RangeBearingParams& p, size_t n, mrpt::random::CRandomGenerator& rng) {
     std::vector<mrpt::math::TPoint2D> out(n);
-    for (auto& pt : out)
-    {
-        const double r = std::max(0.0, range + p.sigmaRange * rng.drawGaussian1D_normalized());
+    for (auto& pt : out) {
+        const double r =
+            std::max(0.0, range + p.sigmaRange * rng.drawGaussian1D_normalized());
         const double b = bearing + p.sigmaBearing * rng.drawGaussian1D_normalized();
         pt = rangeBearingToPoint(sensor, r, b);
     }

@@ -4,16 +4,13 @@
 
 #include <stdexcept>
 
-namespace rfir::models
-{
+namespace rfir::models {
 void TagFixedLagSmoother::initUniform(const mrpt::math::TPose2D& robot,
                                       const ReaderArea& r,
-                                      mrpt::random::CRandomGenerator& rng)
-{
+                                      mrpt::random::CRandomGenerator& rng) {
     if (m_p.numParticles == 0) throw std::invalid_argument("TagFixedLagSmoother: J = 0");
     std::vector<mrpt::math::TPoint2D> pts(m_p.numParticles);
-    for (auto& p : pts)
-    {
+    for (auto& p : pts) {
         ReaderArea off = r;
         off.x = r.x + rng.drawUniform(-r.halfX, r.halfX);
         off.y = r.y + rng.drawUniform(-r.halfY, r.halfY);
@@ -22,8 +19,7 @@ void TagFixedLagSmoother::initUniform(const mrpt::math::TPose2D& robot,
     initFromPoints(std::move(pts));
 }
 
-void TagFixedLagSmoother::initFromPoints(std::vector<mrpt::math::TPoint2D> pts)
-{
+void TagFixedLagSmoother::initFromPoints(std::vector<mrpt::math::TPoint2D> pts) {
     if (pts.empty()) throw std::invalid_argument("TagFixedLagSmoother: no particles");
     if (m_p.lag == 0) throw std::invalid_argument("TagFixedLagSmoother: lag = 0");
     m_pts = std::move(pts);
@@ -35,8 +31,7 @@ void TagFixedLagSmoother::initFromPoints(std::vector<mrpt::math::TPoint2D> pts)
     recomputeEstimate();
 }
 
-void TagFixedLagSmoother::pushStates()
-{
+void TagFixedLagSmoother::pushStates() {
     const size_t lag = m_p.lag;
     for (size_t j = 0; j < m_pts.size(); j++) m_hist[j * lag + m_head] = m_pts[j];
     m_head = (m_head + 1) % lag;
@@ -44,13 +39,11 @@ void TagFixedLagSmoother::pushStates()
 }
 
 void TagFixedLagSmoother::update(const PointLogLikelihood& logLik,
-                                 mrpt::random::CRandomGenerator& rng)
-{
+                                 mrpt::random::CRandomGenerator& rng) {
     if (m_pts.empty()) throw std::logic_error("TagFixedLagSmoother::update before init");
     const size_t n = m_pts.size(), lag = m_p.lag;
     std::vector<double> logW(n);
-    for (size_t j = 0; j < n; j++)
-    {
+    for (size_t j = 0; j < n; j++) {
         // Line 11: m_t = m_{t-1} + Gaussian random step (keeps diversity).
         m_pts[j].x += m_p.stepSigma * rng.drawGaussian1D_normalized();
         m_pts[j].y += m_p.stepSigma * rng.drawGaussian1D_normalized();
@@ -60,8 +53,7 @@ void TagFixedLagSmoother::update(const PointLogLikelihood& logLik,
     // Lines 16-19: resample; whole histories travel with their particles.
     const auto idx = resampleIndices(logW, n, m_p.resampling, rng);
     std::vector<mrpt::math::TPoint2D> pts(n), hist(n * lag);
-    for (size_t k = 0; k < n; k++)
-    {
+    for (size_t k = 0; k < n; k++) {
         pts[k] = m_pts[idx[k]];
         std::copy_n(m_hist.begin() + idx[k] * lag, lag, hist.begin() + k * lag);
     }
@@ -71,17 +63,14 @@ void TagFixedLagSmoother::update(const PointLogLikelihood& logLik,
     recomputeEstimate();  // lines 20-24
 }
 
-std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::smoothedParticles() const
-{
+std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::smoothedParticles() const {
     // Line 20: smoothed particle = mean of its stored states t+1-L .. t.
     const size_t lag = m_p.lag;
     std::vector<mrpt::math::TPoint2D> out(m_pts.size(), {0, 0});
     if (m_count == 0) return out;
-    for (size_t j = 0; j < m_pts.size(); j++)
-    {
+    for (size_t j = 0; j < m_pts.size(); j++) {
         double sx = 0, sy = 0;
-        for (size_t k = 0; k < m_count; k++)
-        {
+        for (size_t k = 0; k < m_count; k++) {
             const auto& s = m_hist[j * lag + (m_head + lag - 1 - k) % lag];
             sx += s.x;
             sy += s.y;
@@ -91,8 +80,7 @@ std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::smoothedParticles() const
     return out;
 }
 
-std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::history(size_t j) const
-{
+std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::history(size_t j) const {
     const size_t lag = m_p.lag;
     std::vector<mrpt::math::TPoint2D> out;
     for (size_t k = m_count; k-- > 0;)
@@ -100,8 +88,7 @@ std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::history(size_t j) const
     return out;
 }
 
-void TagFixedLagSmoother::recomputeEstimate()
-{
+void TagFixedLagSmoother::recomputeEstimate() {
     // Line 24: the estimate comes from the smoothed set (uniform weights after
     // resampling).
     m_est = weightedEstimate(smoothedParticles(), {});
@@ -109,10 +96,9 @@ void TagFixedLagSmoother::recomputeEstimate()
 
 void TagFixedLagSmoother::setState(const Params& p, std::vector<mrpt::math::TPoint2D> pts,
                                    std::vector<mrpt::math::TPoint2D> hist, size_t head,
-                                   size_t count, uint64_t updates)
-{
-    if (pts.empty() || p.lag == 0 || hist.size() != pts.size() * p.lag ||
-        head >= p.lag || count > p.lag || count == 0)
+                                   size_t count, uint64_t updates) {
+    if (pts.empty() || p.lag == 0 || hist.size() != pts.size() * p.lag || head >= p.lag ||
+        count > p.lag || count == 0)
         throw std::invalid_argument("TagFixedLagSmoother::setState: bad sizes");
     m_p = p;
     m_pts = std::move(pts);

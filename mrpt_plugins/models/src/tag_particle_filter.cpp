@@ -3,19 +3,15 @@
 
 #include <stdexcept>
 
-namespace rfir::models
-{
-namespace
-{
+namespace rfir::models {
+namespace {
 std::vector<mrpt::math::TPoint2D> uniformOverReader(const mrpt::math::TPose2D& robot,
                                                     const ReaderArea& r, size_t n,
-                                                    mrpt::random::CRandomGenerator& rng)
-{
+                                                    mrpt::random::CRandomGenerator& rng) {
     // Uniform over the reader's rectangle, drawn in the robot frame and placed
     // in the world by the robot pose (003 eq. 6).
     std::vector<mrpt::math::TPoint2D> pts(n);
-    for (auto& p : pts)
-    {
+    for (auto& p : pts) {
         ReaderArea off = r;
         off.x = r.x + rng.drawUniform(-r.halfX, r.halfX);
         off.y = r.y + rng.drawUniform(-r.halfY, r.halfY);
@@ -27,14 +23,12 @@ std::vector<mrpt::math::TPoint2D> uniformOverReader(const mrpt::math::TPose2D& r
 
 void TagParticleFilter::initUniform(const mrpt::math::TPose2D& robot,
                                     const ReaderArea& reader,
-                                    mrpt::random::CRandomGenerator& rng)
-{
+                                    mrpt::random::CRandomGenerator& rng) {
     if (m_p.numParticles == 0) throw std::invalid_argument("TagParticleFilter: L = 0");
     initFromPoints(uniformOverReader(robot, reader, m_p.numParticles, rng));
 }
 
-void TagParticleFilter::initFromPoints(std::vector<mrpt::math::TPoint2D> pts)
-{
+void TagParticleFilter::initFromPoints(std::vector<mrpt::math::TPoint2D> pts) {
     if (pts.empty()) throw std::invalid_argument("TagParticleFilter: no particles");
     m_pts = std::move(pts);
     m_logW.assign(m_pts.size(), 0.0);  // weight 1 (Alg. 1 line 7)
@@ -43,8 +37,7 @@ void TagParticleFilter::initFromPoints(std::vector<mrpt::math::TPoint2D> pts)
 }
 
 void TagParticleFilter::update(const PointLogLikelihood& logLik,
-                               mrpt::random::CRandomGenerator& rng)
-{
+                               mrpt::random::CRandomGenerator& rng) {
     if (m_pts.empty()) throw std::logic_error("TagParticleFilter::update before init");
     for (size_t l = 0; l < m_pts.size(); l++) m_logW[l] += logLik(m_pts[l]);  // line 10
     m_est = weightedEstimate(m_pts, m_logW);                                  // line 13
@@ -57,8 +50,7 @@ void TagParticleFilter::update(const PointLogLikelihood& logLik,
     std::vector<mrpt::math::TPoint2D> next(idx.size());
     for (size_t k = 0; k < idx.size(); k++) next[k] = m_pts[idx[k]];
     if (m_p.rougheningSigma > 0)
-        for (auto& p : next)
-        {
+        for (auto& p : next) {
             p.x += m_p.rougheningSigma * rng.drawGaussian1D_normalized();
             p.y += m_p.rougheningSigma * rng.drawGaussian1D_normalized();
         }
@@ -68,8 +60,7 @@ void TagParticleFilter::update(const PointLogLikelihood& logLik,
 
 void TagParticleFilter::setState(const Params& p, std::vector<mrpt::math::TPoint2D> pts,
                                  std::vector<double> logW, uint64_t updates,
-                                 const PointEstimate& estimate)
-{
+                                 const PointEstimate& estimate) {
     if (pts.size() != logW.size() || pts.empty())
         throw std::invalid_argument("TagParticleFilter::setState: bad sizes");
     m_p = p;

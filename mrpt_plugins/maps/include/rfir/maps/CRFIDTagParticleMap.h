@@ -18,17 +18,14 @@
 #include <variant>
 #include <vector>
 
-namespace rfir::maps
-{
-enum class TTagEstimatorKind
-{
+namespace rfir::maps {
+enum class TTagEstimatorKind {
     ParticleFilter,   //!< INI "particle_filter" (PF-SLAM)
     FixedLagSmoother  //!< INI "fixed_lag_smoother" (PS-SLAM)
 };
 
 /** How re-reads of a tag weigh the robot (see docs/tag-maps.md). */
-enum class TRobotUpdatePolicy
-{
+enum class TRobotUpdatePolicy {
     /** INI "literal": the seeds' Algorithm 1: update the tag first, then weigh
      * the robot with the updated estimate, on every read (incl. the first). */
     Literal,
@@ -42,17 +39,15 @@ enum class TRobotUpdatePolicy
     RevisitAll
 };
 
-class CRFIDTagParticleMap : public mrpt::maps::CMetricMap
-{
+class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     DEFINE_SERIALIZABLE(CRFIDTagParticleMap, rfir::maps)
 
-public:
+  public:
     using TEstimator =
         std::variant<rfir::models::TagParticleFilter, rfir::models::TagFixedLagSmoother>;
 
     /** One mapped tag or landmark. */
-    struct TTagEntry
-    {
+    struct TTagEntry {
         std::string id;
         TEstimator estimator;
         rfir::models::PointEstimate estimate;  //!< cached from the estimator
@@ -84,8 +79,7 @@ public:
 
     /** Names for CObservationBearingRange landmark IDs (index = ID), as in the
      * log header; IDs without a name use their decimal text. */
-    void setLandmarkNames(const std::vector<std::string>& names)
-    {
+    void setLandmarkNames(const std::vector<std::string>& names) {
         m_landmarkNames = names;
     }
     const std::vector<std::string>& landmarkNames() const { return m_landmarkNames; }
@@ -97,8 +91,7 @@ public:
 
     /** Log-likelihood of one detection of a mapped tag by reader `r` for a
      * robot pose (SPEC section 2), ignoring the robot-update policy. */
-    double detectionLogLikelihood(const TTagEntry& tag,
-                                  const mrpt::math::TPose2D& robot,
+    double detectionLogLikelihood(const TTagEntry& tag, const mrpt::math::TPose2D& robot,
                                   const rfir::models::ReaderArea& r) const;
 
     /** @name Instrumentation: tag entries touched (created or updated).
@@ -117,21 +110,21 @@ public:
 
     // CMetricMap interface
     bool isEmpty() const override;
-    void saveMetricMapRepresentationToFile(const std::string& filNamePrefix) const override;
+    void saveMetricMapRepresentationToFile(
+        const std::string& filNamePrefix) const override;
     void getVisualizationInto(mrpt::opengl::CSetOfObjects& outObj) const override;
     std::string asString() const override;
 
-    struct TInsertionOptions : public mrpt::config::CLoadableOptions
-    {
+    struct TInsertionOptions : public mrpt::config::CLoadableOptions {
         TTagEstimatorKind estimator = TTagEstimatorKind::ParticleFilter;
-        size_t numParticles = 100;  //!< num_particles (L)
-        size_t lag = 25;            //!< lag (smoother)
+        size_t numParticles = 100;         //!< num_particles (L)
+        size_t lag = 25;                   //!< lag (smoother)
         double smootherStepSigma = 0.001;  //!< smoother_step_sigma (m)
-        double rougheningSigma = 0.0;     //!< roughening_sigma (m, PF only)
-        double essThreshold = 1.0;        //!< ess_threshold (PF only)
+        double rougheningSigma = 0.0;      //!< roughening_sigma (m, PF only)
+        double essThreshold = 1.0;         //!< ess_threshold (PF only)
         rfir::models::ResamplingScheme resampling =
             rfir::models::ResamplingScheme::Systematic;  //!< resampling
-        uint64_t seed = 1;  //!< seed
+        uint64_t seed = 1;                               //!< seed
 
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;
@@ -139,8 +132,7 @@ public:
         static const std::vector<std::string>& allowedKeys();
     } insertionOptions;
 
-    struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
-    {
+    struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
         /** detection_model, beta, gaussian_sigma_scale: weigh both tag and robot
          * particles (the seeds use one function for both). */
         rfir::models::DetectionModelParams detection;
@@ -163,19 +155,18 @@ public:
     rfir::maps::CRFIDTagParticleMap::TLikelihoodOptions likelihoodOpts;
     MAP_DEFINITION_END(CRFIDTagParticleMap)
 
-protected:
+  protected:
     void internal_clear() override;
-    bool internal_insertObservation(
-        const mrpt::obs::CObservation& obs,
-        const std::optional<const mrpt::poses::CPose3D>& robotPose =
-            std::nullopt) override;
+    bool internal_insertObservation(const mrpt::obs::CObservation& obs,
+                                    const std::optional<const mrpt::poses::CPose3D>&
+                                        robotPose = std::nullopt) override;
     double internal_computeObservationLikelihood(
         const mrpt::obs::CObservation& obs,
         const mrpt::poses::CPose3D& takenFrom) const override;
     bool internal_canComputeObservationLikelihood(
         const mrpt::obs::CObservation& obs) const override;
 
-private:
+  private:
     using TTable = std::unordered_map<std::string, TTagEntry>;
     TTable m_tags, m_landmarks;
     std::vector<std::string> m_landmarkNames;

@@ -5,24 +5,20 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 
-namespace rfir::models
-{
+namespace rfir::models {
 /** One reader's detection rectangle in the robot frame: centre (x, y) and
  * half-sizes (halfX, halfY), axis-aligned with the robot (metres). */
-struct ReaderArea
-{
+struct ReaderArea {
     double x = 0, y = 0;
     double halfX = 0.03, halfY = 0.03;
 };
 
-enum class DetectionModel
-{
+enum class DetectionModel {
     Step,     //!< the seeds' model: flat inside the rectangle, Gaussian tail
     Gaussian  //!< a plain Gaussian around the reader centre
 };
 
-struct DetectionModelParams
-{
+struct DetectionModelParams {
     DetectionModel model = DetectionModel::Step;
     /** Step model: gain of the tail so that w is about 1 at the edge. The seed
      * uses 1.618 (sigma = 30 mm); exp(1/2) = 1.6487 would make it exactly 1. */
@@ -41,9 +37,8 @@ double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy
 
 /** Functor over both models. Likelihoods are unnormalised (max 1): only ratios
  * between particles matter to the filters. */
-class DetectionLikelihood
-{
-public:
+class DetectionLikelihood {
+  public:
     DetectionLikelihood() = default;
     explicit DetectionLikelihood(const DetectionModelParams& p) : m_p(p) {}
 
@@ -58,7 +53,7 @@ public:
 
     const DetectionModelParams& params() const { return m_p; }
 
-private:
+  private:
     DetectionModelParams m_p;
 };
 

@@ -7,8 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace rfir
-{
+namespace rfir {
 /** Throws std::runtime_error("[section] unknown key 'k' (allowed: ...)") if the
  * section has a key not in allowedKeys (case-sensitive). A missing section
  * passes. */

@@ -7,14 +7,12 @@
 #include <functional>
 #include <vector>
 
-namespace rfir::models
-{
+namespace rfir::models {
 /** Log-likelihood of an observation given that the tag is at a point. */
 using PointLogLikelihood = std::function<double(const mrpt::math::TPoint2D&)>;
 
 /** Mean and 2x2 covariance of a point estimate. */
-struct PointEstimate
-{
+struct PointEstimate {
     mrpt::math::TPoint2D mean{0, 0};
     mrpt::math::CMatrixDouble22 cov = mrpt::math::CMatrixDouble22::Zero();
 };

@@ -8,11 +8,9 @@
 
 #include <vector>
 
-namespace rfir::models
-{
-struct RangeBearingParams
-{
-    double sigmaRange = 0.010;                    //!< m (seed: 10 mm)
+namespace rfir::models {
+struct RangeBearingParams {
+    double sigmaRange = 0.010;                           //!< m (seed: 10 mm)
     double sigmaBearing = 3.0 * 3.14159265358979 / 180;  //!< rad (seed: 3 deg)
 };
 
@@ -29,8 +27,8 @@ double rangeBearingLogLikelihood(const mrpt::math::TPose2D& sensor,
 
 /** Inverse model: the point a noise-free (range, bearing) reading puts in the
  * world. */
-mrpt::math::TPoint2D rangeBearingToPoint(const mrpt::math::TPose2D& sensor,
-                                         double range, double bearing);
+mrpt::math::TPoint2D rangeBearingToPoint(const mrpt::math::TPose2D& sensor, double range,
+                                         double bearing);
 
 /** Inverse model with noise: n samples of the landmark position, range and
  * bearing drawn from the sensor's Gaussians (used to initialise a landmark). */

@@ -9,13 +9,11 @@
 #include <string>
 #include <vector>
 
-namespace rfir::models
-{
-enum class ResamplingScheme
-{
-    Systematic,   //!< low-variance (one uniform draw, L evenly spaced pointers)
-    Stratified,   //!< one uniform draw per stratum
-    Multinomial   //!< L independent draws
+namespace rfir::models {
+enum class ResamplingScheme {
+    Systematic,  //!< low-variance (one uniform draw, L evenly spaced pointers)
+    Stratified,  //!< one uniform draw per stratum
+    Multinomial  //!< L independent draws
 };
 
 /** Parses "systematic" | "stratified" | "multinomial"; throws otherwise. */

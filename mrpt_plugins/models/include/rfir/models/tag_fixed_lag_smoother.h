@@ -11,10 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-namespace rfir::models
-{
-struct TagFixedLagSmootherParams
-{
+namespace rfir::models {
+struct TagFixedLagSmootherParams {
     size_t numParticles = 100;  //!< J (seeds: 100)
     size_t lag = 25;            //!< states kept per particle (seeds: 20-30)
     /** Std (m) of the Gaussian random step applied to every particle on each
@@ -26,9 +24,8 @@ struct TagFixedLagSmootherParams
 /** Every particle carries its last `lag` states in a ring buffer; histories
  * travel with their particles on resampling. The smoothed particle is the mean
  * of its stored states; the estimate is built from the smoothed set. */
-class TagFixedLagSmoother
-{
-public:
+class TagFixedLagSmoother {
+  public:
     using Params = TagFixedLagSmootherParams;
 
     TagFixedLagSmoother() = default;
@@ -63,15 +60,15 @@ public:
                   std::vector<mrpt::math::TPoint2D> hist, size_t head, size_t count,
                   uint64_t updates);
 
-private:
+  private:
     void pushStates();
     void recomputeEstimate();
 
     Params m_p;
     std::vector<mrpt::math::TPoint2D> m_pts;   //!< current states
     std::vector<mrpt::math::TPoint2D> m_hist;  //!< numParticles x lag ring rows
-    size_t m_head = 0;   //!< next slot to write
-    size_t m_count = 0;  //!< stored states per particle (<= lag)
+    size_t m_head = 0;                         //!< next slot to write
+    size_t m_count = 0;                        //!< stored states per particle (<= lag)
     PointEstimate m_est;
     uint64_t m_updates = 0;
 };

@@ -11,10 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-namespace rfir::models
-{
-struct TagParticleFilterParams
-{
+namespace rfir::models {
+struct TagParticleFilterParams {
     size_t numParticles = 100;  //!< L (seeds: 100 in 004, 150 in 003)
     ResamplingScheme resampling = ResamplingScheme::Systematic;
     /** Resample when ESS / L falls below this; 1 = every update (the seed). */
@@ -25,9 +23,8 @@ struct TagParticleFilterParams
 };
 
 /** Independent particle set for one static 2D point (a tag or landmark). */
-class TagParticleFilter
-{
-public:
+class TagParticleFilter {
+  public:
     using Params = TagParticleFilterParams;
 
     TagParticleFilter() = default;
@@ -58,7 +55,7 @@ public:
                   std::vector<double> logW, uint64_t updates,
                   const PointEstimate& estimate);
 
-private:
+  private:
     Params m_p;
     std::vector<mrpt::math::TPoint2D> m_pts;
     std::vector<double> m_logW;

@@ -44,7 +44,7 @@ public:
 
 private:
     void lossy(const std::string& what);
-    void emit(std::ostream& out, const TTimedRecord& r);
+    std::string validLine(const TTimedRecord& r);
     void timeOf(const CObservation& o, double& t);
     void convertFrame(std::ostream& out, const TRawlogStep& st);
     std::vector<TTimedRecord> recordsOf(const CObservation& o, double t);
@@ -76,7 +76,7 @@ void CRawToText::lossy(const std::string& what)
     flagged_++;
 }
 
-void CRawToText::emit(std::ostream& out, const TTimedRecord& r)
+std::string CRawToText::validLine(const TTimedRecord& r)
 {
     std::ostringstream s;
     writeTimedRecord(s, r);
@@ -91,8 +91,8 @@ void CRawToText::emit(std::ostream& out, const TTimedRecord& r)
         throw std::runtime_error(in_ + ": instant " + std::to_string(instant_) +
                                  ": would write an invalid text log line: " + e.message());
     }
-    out << line;
     rep_.timedRecords++;
+    return line;
 }
 
 void CRawToText::timeOf(const CObservation& o, double& t)
@@ -231,14 +231,16 @@ void CRawToText::convertFrame(std::ostream& out, const TRawlogStep& st)
     {
         const std::string cls = o->GetRuntimeClass()->className;
         if (++perClass[cls] == 2) lossy("several " + cls + " in one instant");
+        const size_t flagged = flagged_;
         double t = 0;
         timeOf(*o, t);
-        const size_t flagged = flagged_;
         const auto recs = recordsOf(*o, t);
         // One reason per observation is enough: the generic one only when no
         // specific one was found.
+        std::string text;
+        for (const auto& r : recs) text += validLine(r);
         if (flagged_ == flagged) checkRebuilt(*o, recs);
-        for (const auto& r : recs) emit(out, r);
+        out << text;
     }
 }
 

@@ -49,11 +49,13 @@ void forEachRecord(const std::string& path, const TConvertOptions& opts,
     CProgress prog(opts.progress, what + " " + path, size);
     std::string line;
     size_t n = 0;
+    uint64_t done = 0;
     TTimedRecord rec;
     while (std::getline(f, line))
     {
         if (p.parseLine(line, ++n, rec)) onRecord(rec);
-        if ((n & 8191) == 0) prog.update(uint64_t(f.tellg()));
+        done += line.size() + 1;
+        prog.update(done);
     }
     if (f.bad()) throw std::runtime_error(path + ": read error");
     p.finish(n);
@@ -74,7 +76,7 @@ TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
 {
     CTextLogParser p(path);
     TChecked c;
-    std::unordered_map<std::string, size_t> seen;
+    std::unordered_map<std::string, size_t> seen, atThisT;
     std::optional<double> prevT;
     mrpt::Clock::time_point prevTs;
     size_t prevLine = 0;
@@ -91,6 +93,7 @@ TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
                      formatNumber(*prevT) + " (line " + std::to_string(prevLine) +
                      ") differ by less than the 100 ns resolution of MRPT timestamps");
             if (!c.instants++) c.firstT = r.t;
+            atThisT.clear();
             prevT = r.t;
             prevTs = *ts;
             prevLine = r.line;
@@ -98,8 +101,17 @@ TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
         if (r.kind == TTimedRecord::Kind::IrRaw && r.samples.size() < 16)
             fail("ir_raw window of " + std::to_string(r.samples.size()) +
                  " samples is too short to decode (at least 16)");
-        if (r.kind == TTimedRecord::Kind::Rb && seen.emplace(r.id, seen.size()).second)
-            c.landmarks.push_back(r.id);
+        if (r.kind == TTimedRecord::Kind::Rb)
+        {
+            // MRPT refuses to serialize two measurements of one landmark in
+            // one CObservationBearingRange.
+            if (auto [it, isNew] = atThisT.emplace(r.id, r.line); !isNew)
+                fail("landmark '" + r.id + "' is measured twice at t " + formatNumber(r.t) +
+                     " (first at line " + std::to_string(it->second) +
+                     "): an MRPT range-bearing observation holds one measurement per "
+                     "landmark");
+            if (seen.emplace(r.id, seen.size()).second) c.landmarks.push_back(r.id);
+        }
         c.records++;
     });
     c.header = p.header();

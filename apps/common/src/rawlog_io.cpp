@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -122,7 +123,16 @@ void CRawlogWriter::close()
 
 CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
 {
-    if (!in_.open(path)) throw std::runtime_error(path + ": cannot open rawlog");
+    // CFileGZInputStream throws its own exception type for a missing file.
+    bool opened = false;
+    try
+    {
+        opened = std::filesystem::is_regular_file(path) && in_.open(path);
+    }
+    catch (const std::exception&)
+    {
+    }
+    if (!opened) throw std::runtime_error(path + ": cannot open rawlog");
     auto a = readObject();
     auto s = readObject();
     auto acts = std::dynamic_pointer_cast<CActionCollection>(a);

@@ -114,4 +114,16 @@ void plotLines(const std::string& pngPath, const TLinePlot& plot) {
     savePngAtomically(pngPath, renderLinePlot(plot));
 }
 
+TSeries errorVsTime(const std::string& label, const std::vector<TPoseError>& perPose,
+                    bool mm) {
+    TSeries s;
+    s.label = label;
+    s.markers = false;
+    for (const auto& e : perPose) {
+        s.x.push_back(e.t);
+        s.y.push_back(mm ? 1e3 * e.dist : e.dist);
+    }
+    return s;
+}
+
 }  // namespace rfir::eval

@@ -15,7 +15,8 @@ using namespace rfir::eval;
 using rfir::common::TMapEntry;
 
 struct TArgs {
-    std::string path, gtPath, map, gtMap, rawlog, label, plot, title, jsonFile, kind;
+    std::string path, gtPath, map, gtMap, rawlog, label, plot, errorPlot, title, jsonFile,
+        kind;
     bool jsonOnly = false, noOdometry = false, ids = false, atGtTimes = false;
 };
 
@@ -23,6 +24,8 @@ struct TArgs {
 void validate(const TArgs& a) {
     if (!a.path.empty() && a.gtPath.empty())
         throw std::invalid_argument("--path needs --gt-path (the ground-truth path)");
+    if (!a.errorPlot.empty() && a.path.empty())
+        throw std::invalid_argument("--error-plot needs --path and --gt-path");
     if (!a.map.empty() && a.gtMap.empty())
         throw std::invalid_argument("--map needs --gt-map (the ground-truth map)");
     if (a.path.empty() && a.map.empty())
@@ -38,6 +41,17 @@ void validate(const TArgs& a) {
 struct TExit {
     int code;
 };
+
+/** MRPT's TCLAP returns false both after --help/--version and after printing a
+ * usage error. */
+void parseOrExit(TCLAP::CmdLine& cmd, int argc, char** argv) {
+    if (cmd.parse(argc, argv)) return;
+    for (int i = 1; i < argc; i++) {
+        const std::string s = argv[i];
+        if (s == "-h" || s == "--help" || s == "--version") throw TExit{0};
+    }
+    throw TExit{2};
+}
 
 TArgs parse(int argc, char** argv) {
     TCLAP::CmdLine cmd(
@@ -72,6 +86,9 @@ TArgs parse(int argc, char** argv) {
                                        false, "estimate", "NAME", cmd);
     TCLAP::ValueArg<std::string> plot("", "plot", "write the path-and-map figure (PNG)",
                                       false, "", "OUT.png", cmd);
+    TCLAP::ValueArg<std::string> errorPlot(
+        "", "error-plot", "write the robot's position error vs time (PNG)", false, "",
+        "OUT.png", cmd);
     TCLAP::ValueArg<std::string> title("", "title", "figure title (default: the label)",
                                        false, "", "TEXT", cmd);
     TCLAP::SwitchArg ids("", "ids", "write landmark IDs on the figure", cmd);
@@ -80,15 +97,7 @@ TArgs parse(int argc, char** argv) {
                                           "FILE (atomically)",
                                           false, "", "FILE", cmd);
     TCLAP::SwitchArg jsonOnly("", "json-only", "print only the JSON line", cmd);
-    if (!cmd.parse(argc, argv)) {
-        // MRPT's TCLAP returns false both after --help/--version and after
-        // printing a usage error.
-        for (int i = 1; i < argc; i++) {
-            const std::string s = argv[i];
-            if (s == "-h" || s == "--help" || s == "--version") throw TExit{0};
-        }
-        throw TExit{2};
-    }
+    parseOrExit(cmd, argc, argv);
     TArgs a;
     a.path = path.getValue(), a.gtPath = gtPath.getValue(), a.map = map.getValue();
     a.gtMap = gtMap.getValue(), a.rawlog = rawlog.getValue(), a.label = label.getValue();
@@ -97,6 +106,7 @@ TArgs parse(int argc, char** argv) {
     a.kind = kind.getValue(), a.jsonOnly = jsonOnly.getValue();
     a.noOdometry = noOdom.getValue(), a.ids = ids.getValue();
     a.atGtTimes = atGt.getValue();
+    a.errorPlot = errorPlot.getValue();
     validate(a);
     return a;
 }
@@ -114,6 +124,22 @@ void addPassedOver(TMapErrors& m, const rfir::common::TMapFile& est,
                   << (m.kind == TMapEntry::Kind::Tag ? "RFID reader"
                                                      : "range-bearing sensor")
                   << ": no passed-over count\n";
+}
+
+void writeErrorPlot(const std::string& png, const TEvalResult& r,
+                    const std::string& title) {
+    if (!r.robot) throw std::invalid_argument("--error-plot needs --path and --gt-path");
+    TLinePlot p;
+    p.title = title + ": robot position error";
+    p.xLabel = "time [s]";
+    p.yLabel = "dr [mm]";
+    p.series.push_back(errorVsTime(r.label, r.robot->perPose));
+    p.series.back().color = mrpt::img::TColor(220, 30, 30);
+    if (r.odometry) {
+        p.series.push_back(errorVsTime("odometry", r.odometry->perPose));
+        p.series.back().color = mrpt::img::TColor(130, 130, 130);
+    }
+    plotLines(png, p);
 }
 
 int run(const TArgs& a) {
@@ -165,6 +191,7 @@ int run(const TArgs& a) {
         rfir::common::writeFileAtomically(a.jsonFile,
                                           [&](std::ostream& o) { o << json << "\n"; });
     if (!a.plot.empty()) plotMapFigure(a.plot, fig);
+    if (!a.errorPlot.empty()) writeErrorPlot(a.errorPlot, r, fig.title);
     return 0;
 }
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <rfir/common/map_io.h>
 #include <rfir/common/trajectory_io.h>
+#include <rfir/eval/metrics.h>
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/img/TColor.h>
@@ -80,6 +81,11 @@ void plotMapFigure(const std::string& pngPath, const TMapFigure& fig);
 
 mrpt::img::CImage renderLinePlot(const TLinePlot& plot, TPlotAxes* axes = nullptr);
 void plotLines(const std::string& pngPath, const TLinePlot& plot);
+
+/** A robot-error-vs-time series (distance, metres; or mm with `mm`) for a
+ * line plot, e.g. the kidnapping figure (thesis fig. 3.12(b)). */
+TSeries errorVsTime(const std::string& label, const std::vector<TPoseError>& perPose,
+                    bool mm = true);
 
 /** Writes any CImage as PNG through a temporary file (writeViaTempFile). */
 void savePngAtomically(const std::string& pngPath, const mrpt::img::CImage& img);

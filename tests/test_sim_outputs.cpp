@@ -71,6 +71,8 @@ TEST(SimOutputs, RawlogReadsBackWithGroundTruth)
     EXPECT_EQ(rd.header().receivers, c.receivers);
     ASSERT_TRUE(rd.header().startPose.has_value());
     EXPECT_NEAR(rd.header().startPose->distanceTo(out.groundTruth[0].pose), 0, 1e-12);
+    EXPECT_DOUBLE_EQ(out.steps[0].t, c.startTime);  // a zero MRPT timestamp is invalid
+    EXPECT_GT(c.startTime, 0);
     rfir::common::TRawlogStep s;
     size_t n = 0;
     while (rd.next(s))
@@ -154,7 +156,7 @@ TEST(SimTrajectory, SpotsAreStops)
     for (const auto& sp : out.spots)
     {
         // The robot stands still for the whole pause around the spot time.
-        const size_t k = size_t(std::lround(sp.t / c.dt));
+        const size_t k = size_t(std::lround((sp.t - c.startTime) / c.dt));
         for (size_t j = k - 3; j <= k + 3; j++)
             EXPECT_NEAR(out.steps[j].truePose.distanceTo(sp.pose), 0, 1e-9);
     }

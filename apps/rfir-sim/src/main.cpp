@@ -65,7 +65,7 @@ int run(const std::string& ini, const std::vector<std::string>& sets, const std:
                   << out.spots.size() << " spots; odometry alone: mean error "
                   << (nOdo ? sumErr / nOdo : 0.0) << " m, max " << maxErr << " m\n";
     }
-    rfir::sim::writeOutputs(out, dir, name);
+    rfir::sim::writeOutputs(out, dir, name, quiet ? nullptr : &std::cerr);
     if (!quiet) std::cerr << "rfir-sim: wrote " << dir << "/" << name << ".*\n";
     return 0;
 }

@@ -44,6 +44,7 @@ namespace
 void loadSimulation(const CIniSection& s, TSimConfig& c)
 {
     s.positive("dt", c.dt);
+    s.positive("start_time", c.startTime);
     s.nonNegative("max_duration", c.maxDuration);
     std::vector<std::vector<double>> a;
     if (s.numberLists("area", {4}, a))
@@ -159,7 +160,7 @@ void TSimConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                     const std::string& p)
 {
     loadSimulation(CIniSection(cfg, p + "simulation",
-                               {"dt", "max_duration", "area"}),
+                               {"dt", "start_time", "max_duration", "area"}),
                    *this);
     loadRobot(CIniSection(cfg, p + "robot",
                           {"readers", "reader_half_size", "reader_ring_radius",

@@ -91,6 +91,7 @@ void TSimConfig::validate() const
 {
     auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
     if (!(dt > 0)) bad("[simulation] dt must be > 0");
+    if (!(startTime > 0)) bad("[simulation] start_time must be > 0");
     if (!(areaMaxX > areaMinX && areaMaxY > areaMinY)) bad("[simulation] area is empty");
     const double w = areaMaxX - areaMinX, h = areaMaxY - areaMinY;
     if (2 * trajectory.margin >= w || 2 * trajectory.margin >= h)
@@ -109,7 +110,7 @@ void TSimConfig::validate() const
 
 void TSimConfig::dumpToTextStream(std::ostream& o) const
 {
-    o << "[simulation] dt=" << dt << " max_duration=" << maxDuration << " area=" << areaMinX
+    o << "[simulation] dt=" << dt << " start_time=" << startTime << " max_duration=" << maxDuration << " area=" << areaMinX
       << " " << areaMinY << " " << areaMaxX << " " << areaMaxY << "\n";
     o << "[robot] readers=";
     for (size_t i = 0; i < readers.size(); i++)

@@ -112,7 +112,8 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed)
         }
     auto& h = out.header;
     h.sensorLabel = "HEADER";
-    h.timestamp = mrpt::Clock::fromDouble(0);  // not "now": outputs must be reproducible
+    // Not "now": outputs must be reproducible.
+    h.timestamp = mrpt::Clock::fromDouble(cfg.startTime);
     if (cfg.rfid.enabled) h.readers = cfg.readers;
     if (cfg.ir.enabled) h.receivers = cfg.receivers;
     if (cfg.rb.enabled)
@@ -131,18 +132,19 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed)
     for (size_t k = 0; k < n; k++)
     {
         TSimStep s;
-        s.t = k * cfg.dt;
-        s.truePose = tl.truePose(s.t);
-        const CPose2D wheels = tl.wheels(s.t);
+        const double e = k * cfg.dt;  // elapsed; the clock reads startTime + e
+        s.t = cfg.startTime + e;
+        s.truePose = tl.truePose(e);
+        const CPose2D wheels = tl.wheels(e);
         if (k > 0) odom = odom + odo.noisyIncrement(wheels - prevWheels);
         prevWheels = wheels;
-        const bool carried = tl.carried(s.t);
+        const bool carried = tl.carried(e);
         if (!carried || cfg.kidnap.odometry == TKidnapConfig::Odometry::Frozen)
             s.odometry = odom;
         if (!carried)
         {
             if (cfg.rfid.enabled) s.obs.push_back(senseRFID(cfg, world, s.truePose, rngRFID));
-            const long irSlot = long(std::floor(s.t / cfg.ir.period + 1e-9));
+            const long irSlot = long(std::floor(e / cfg.ir.period + 1e-9));
             if (cfg.ir.enabled && irSlot != lastIR)
             {
                 s.obs.push_back(senseIR(cfg, world, s.truePose, rngIR));
@@ -155,13 +157,14 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed)
     }
     for (double sp : plan.spotTimes())
         for (double t : tl.realTimes(sp))
-            if (t <= end) out.spots.push_back({t, tl.truePose(t)});
+            if (t <= end) out.spots.push_back({cfg.startTime + t, tl.truePose(t)});
     std::sort(out.spots.begin(), out.spots.end(),
               [](const auto& a, const auto& b) { return a.t < b.t; });
     return out;
 }
 
-void writeOutputs(const TSimOutput& out, const std::string& dir, const std::string& name)
+void writeOutputs(const TSimOutput& out, const std::string& dir, const std::string& name,
+                  std::ostream* progress)
 {
     const std::string base = dir + "/" + name;
     {
@@ -171,8 +174,8 @@ void writeOutputs(const TSimOutput& out, const std::string& dir, const std::stri
         {
             const auto& s = out.steps[k];
             w.writeStep(s.t, s.odometry, s.obs);
-            if (n >= 1000 && (k + 1) % (n / 10) == 0)
-                std::cerr << "rfir-sim: wrote " << (k + 1) << "/" << n << " steps\n";
+            if (progress && n >= 1000 && (k + 1) % (n / 10) == 0)
+                *progress << "rfir-sim: wrote " << (k + 1) << "/" << n << " steps\n";
         }
         w.close();
     }

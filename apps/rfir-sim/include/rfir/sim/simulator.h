@@ -31,6 +31,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -154,6 +155,10 @@ struct TSimConfig : public mrpt::config::CLoadableOptions
 
     // [simulation]
     double dt = 0.1;           //!< sensing period (s)
+    /** Clock reading at the first step (s, > 0: MRPT takes a zero timestamp as
+     * invalid). Step k is at startTime + k dt; kidnap times, spot pauses and
+     * maxDuration count from the start. */
+    double startTime = 1.0;
     double maxDuration = 0;    //!< > 0: cut the run there (s)
     double areaMinX = 0, areaMinY = 0, areaMaxX = 4, areaMaxY = 4;  //!< m
 
@@ -216,8 +221,9 @@ struct TSimOutput
 TSimOutput simulate(const TSimConfig& cfg, uint64_t seed);
 
 /** Writes DIR/NAME.rawlog, NAME.gt.tum, NAME.gt_map.txt and, when there are
- * spots, NAME.spots.tum (each file whole or not at all). */
+ * spots, NAME.spots.tum (each file whole or not at all); progress lines go to
+ * `progress` if given. */
 void writeOutputs(const TSimOutput& out, const std::string& outDir,
-                  const std::string& name);
+                  const std::string& name, std::ostream* progress = nullptr);
 
 }  // namespace rfir::sim

@@ -103,6 +103,7 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey) {
         {"likelihoodOpts", "robot_update = sometimes", "robot_update"},
         {"likelihoodOpts", "beta = 0", "beta"},
         {"likelihoodOpts", "revisit_min_gap = 0", "revisit_min_gap"},
+        {"likelihoodOpts", "revisit_min_travel = -0.1", "revisit_min_travel"},
         {"likelihoodOpts", "robotupdate = literal", "robotupdate"},
     };
     for (const auto& c : cases) {
@@ -132,6 +133,7 @@ void expectSame(const CRFIDTagParticleMap& a, const CRFIDTagParticleMap& b) {
         EXPECT_EQ(ta[i]->detections, tb[i]->detections);
         EXPECT_EQ(ta[i]->visits, tb[i]->visits);
         EXPECT_EQ(ta[i]->lastReadStep, tb[i]->lastReadStep);
+        EXPECT_EQ(ta[i]->lastReadTravel, tb[i]->lastReadTravel);
         EXPECT_EQ(ta[i]->estimate.mean.x, tb[i]->estimate.mean.x);
         EXPECT_EQ(ta[i]->estimate.cov(0, 1), tb[i]->estimate.cov(0, 1));
         const auto &pa = ta[i]->particles(), &pb = tb[i]->particles();
@@ -152,6 +154,7 @@ TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically) {
         CRFIDTagParticleMap a;
         a.likelihoodOptions.robotUpdate = rfir::maps::TRobotUpdatePolicy::Revisit;
         a.insertionOptions.rougheningSigma = 0.001;
+        a.likelihoodOptions.revisitMinTravel = 0.05;
         buildMap(a, kind, 0.6);
         mrpt::io::CMemoryStream buf;
         mrpt::serialization::archiveFrom(buf) << a;

@@ -169,6 +169,29 @@ TEST(TagMap, RobotUpdatePolicies) {
     EXPECT_LT(m.computeObservationLikelihood(*oneRead("T"), far), -100.0);
 }
 
+TEST(TagMap, RevisitNeedsTravelWhenAsked) {
+    // revisit_min_travel: reads separated by a short gap (the tag passing from
+    // one reader to the next) stay in one visit; a long trip makes a new one.
+    const auto far = pose3({3.0, 0.0, 0.0});
+    CRFIDTagParticleMap m;
+    m.likelihoodOptions.robotUpdate = TRobotUpdatePolicy::Revisit;
+    m.likelihoodOptions.revisitMinTravel = 0.5;
+    m.insertObservation(*oneRead("T"), pose3({0, 0, 0}));
+    m.insertObservation(*oneRead(""), pose3({0.1, 0, 0}));
+    m.insertObservation(*oneRead(""), pose3({0.2, 0, 0}));
+    EXPECT_FALSE(m.isNewVisit("T"));
+    EXPECT_EQ(m.computeObservationLikelihood(*oneRead("T"), far), 0.0);
+    m.insertObservation(*oneRead("T"), pose3({0.3, 0, 0}));  // same visit
+    EXPECT_EQ(m.getTag("T")->visits, 1u);
+    for (double x : {0.6, 0.9, 0.6, 0.35})  // away and back: 1.15 m since the read
+        m.insertObservation(*oneRead(""), pose3({x, 0, 0}));
+    EXPECT_TRUE(m.isNewVisit("T"));
+    EXPECT_LT(m.computeObservationLikelihood(*oneRead("T"), far), -100.0);
+    m.insertObservation(*oneRead("T"), pose3({0.3, 0, 0}));
+    EXPECT_EQ(m.getTag("T")->visits, 2u);
+    EXPECT_NEAR(m.getTag("T")->lastReadTravel, 1.5, 1e-12);
+}
+
 TEST(TagMap, RangeBearingLandmarks) {
     CRFIDTagParticleMap m;
     m.setLandmarkNames({"L0", "L1", ""});

@@ -61,25 +61,44 @@ struct CRFIDTagParticleMapImpl {
         e.estimate = std::visit([](auto& est) { return est.estimate(); }, e.estimator);
     }
 
-    /** Marks a read at `step`; starts a new visit (freezing the estimate) if the
-     * entry was absent from >= minGap observations. */
-    static void markRead(Entry& e, uint64_t step, size_t minGap, size_t reads) {
-        if (e.visits == 0 || step - 1 - e.lastReadStep >= minGap) {
+    /** Would a read of `e` in the next observation of a sensor whose track is
+     * `t` (not yet advanced by that observation) start a new visit? The same
+     * test serves the likelihood (before insertion) and the insertion. */
+    static bool newVisit(const Map& m, const Entry& e, const Map::TSensorTrack& t) {
+        const auto& lo = m.likelihoodOptions;
+        return e.visits == 0 || (t.steps - e.lastReadStep >= lo.revisitMinGap &&
+                                 t.travel - e.lastReadTravel >= lo.revisitMinTravel);
+    }
+
+    /** Advances a sensor's track by one inserted observation at `robot`. */
+    static uint64_t advance(Map::TSensorTrack& t, const mrpt::math::TPose2D& robot) {
+        if (t.hasPose) t.travel += std::hypot(robot.x - t.lastX, robot.y - t.lastY);
+        t.hasPose = true;
+        t.lastX = robot.x;
+        t.lastY = robot.y;
+        return ++t.steps;
+    }
+
+    /** Marks a read; starts a new visit (freezing the estimate) if due. `before`
+     * is the track as it was before this observation. */
+    static void markRead(const Map& m, Entry& e, const Map::TSensorTrack& before,
+                         const Map::TSensorTrack& now, size_t reads) {
+        if (newVisit(m, e, before)) {
             e.visits++;
             e.visitStartEstimate = e.estimate;
         }
-        e.lastReadStep = step;
+        e.lastReadStep = now.steps;
+        e.lastReadTravel = now.travel;
         e.detections += reads;
     }
 
     /** Which estimate (if any) weighs the robot for a read of `e`, per policy. */
     static const PointEstimate* estimateForRobot(const Map& m, const Entry& e,
-                                                 uint64_t stepsSoFar) {
+                                                 const Map::TSensorTrack& t) {
         const auto& lo = m.likelihoodOptions;
         if (lo.robotUpdate == TRobotUpdatePolicy::Literal) return &e.estimate;
-        // Called before this observation is inserted: e.lastReadStep <= stepsSoFar.
-        const bool newVisit = stepsSoFar - e.lastReadStep >= lo.revisitMinGap;
-        if (newVisit) return &e.estimate;  // still the estimate before this visit
+        // Called before this observation is inserted.
+        if (newVisit(m, e, t)) return &e.estimate;  // the estimate before this visit
         if (lo.robotUpdate == TRobotUpdatePolicy::RevisitAll && e.visits >= 2)
             return &e.visitStartEstimate;
         return nullptr;  // consecutive re-read (or first pass): nothing new
@@ -94,7 +113,8 @@ struct CRFIDTagParticleMapImpl {
 
     static void insertRFID(Map& m, const rfir::obs::CObservationRFIDReaders& o,
                            const mrpt::math::TPose2D& robot) {
-        const uint64_t step = ++m.m_rfidSteps;
+        const Map::TSensorTrack before = m.m_track[0];
+        const uint64_t step = advance(m.m_track[0], robot);
         mrpt::random::CRandomGenerator rng(stepSeed(m.insertionOptions.seed, 2 * step));
         // Group the readers that read each tag at this instant (order kept).
         std::vector<std::pair<std::string, std::vector<ReaderArea>>> groups;
@@ -123,7 +143,7 @@ struct CRFIDTagParticleMapImpl {
                 first = 1;
             }
             Entry& e = it->second;
-            markRead(e, step, m.likelihoodOptions.revisitMinGap, areas.size());
+            markRead(m, e, before, m.m_track[0], areas.size());
             if (first < areas.size()) {
                 const std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
                 update(
@@ -149,7 +169,8 @@ struct CRFIDTagParticleMapImpl {
 
     static void insertRB(Map& m, const mrpt::obs::CObservationBearingRange& o,
                          const mrpt::math::TPose2D& robot) {
-        const uint64_t step = ++m.m_rbSteps;
+        const Map::TSensorTrack before = m.m_track[1];
+        const uint64_t step = advance(m.m_track[1], robot);
         mrpt::random::CRandomGenerator rng(
             stepSeed(m.insertionOptions.seed, 2 * step + 1));
         const auto sensor = sensorPose(o, robot);
@@ -168,10 +189,10 @@ struct CRFIDTagParticleMapImpl {
                            e.estimator);
                 e.estimate =
                     std::visit([](auto& est) { return est.estimate(); }, e.estimator);
-                markRead(e, step, m.likelihoodOptions.revisitMinGap, 1);
+                markRead(m, e, before, m.m_track[1], 1);
                 m.m_landmarks.emplace(id, std::move(e));
             } else {
-                markRead(it->second, step, m.likelihoodOptions.revisitMinGap, 1);
+                markRead(m, it->second, before, m.m_track[1], 1);
                 update(
                     it->second,
                     [&](const mrpt::math::TPoint2D& p) {
@@ -252,7 +273,7 @@ std::string CRFIDTagParticleMap::landmarkName(int32_t id) const {
 
 bool CRFIDTagParticleMap::isNewVisit(const std::string& tagId) const {
     const TTagEntry* e = getTag(tagId);
-    return e && m_rfidSteps - e->lastReadStep >= likelihoodOptions.revisitMinGap;
+    return e && Impl::newVisit(*this, *e, m_track[0]);
 }
 
 double CRFIDTagParticleMap::detectionLogLikelihood(const TTagEntry& tag,
@@ -269,7 +290,7 @@ bool CRFIDTagParticleMap::isEmpty() const {
 void CRFIDTagParticleMap::internal_clear() {
     m_tags.clear();
     m_landmarks.clear();
-    m_rfidSteps = m_rbSteps = 0;
+    m_track[0] = m_track[1] = TSensorTrack();
     m_lastTouched = 0;
     m_totalTouched = 0;
 }
@@ -313,7 +334,7 @@ double CRFIDTagParticleMap::internal_computeObservationLikelihood(
                 const auto it = m_tags.find(id);
                 if (it == m_tags.end()) continue;
                 const PointEstimate* est =
-                    Impl::estimateForRobot(*this, it->second, m_rfidSteps);
+                    Impl::estimateForRobot(*this, it->second, m_track[0]);
                 if (est)
                     sum += det.logLikelihood(robot, Impl::area(rd.reader), est->mean);
             }
@@ -324,7 +345,7 @@ double CRFIDTagParticleMap::internal_computeObservationLikelihood(
             const auto it = m_landmarks.find(landmarkName(z.landmarkID));
             if (it == m_landmarks.end()) continue;
             const PointEstimate* est =
-                Impl::estimateForRobot(*this, it->second, m_rbSteps);
+                Impl::estimateForRobot(*this, it->second, m_track[1]);
             if (est) sum += Impl::rbLogLik(*this, *est, sensor, z.range, z.yaw);
         }
     }

@@ -108,6 +108,7 @@ void writeEntries(CArchive& a,
         a.WriteAs<uint64_t>(e->detections);
         a.WriteAs<uint64_t>(e->visits);
         a.WriteAs<uint64_t>(e->lastReadStep);
+        a << e->lastReadTravel;
         writeEst(a, e->visitStartEstimate);
         writeEst(a, e->estimate);
         writeEstimator(a, e->estimator);
@@ -115,7 +116,7 @@ void writeEntries(CArchive& a,
 }
 
 template <class TABLE>
-void readEntries(CArchive& a, TABLE& t) {
+void readEntries(CArchive& a, TABLE& t, uint8_t version) {
     t.clear();
     const auto n = a.ReadAs<uint64_t>();
     for (uint64_t i = 0; i < n; i++) {
@@ -124,6 +125,7 @@ void readEntries(CArchive& a, TABLE& t) {
         e.detections = a.ReadAs<uint64_t>();
         e.visits = a.ReadAs<uint64_t>();
         e.lastReadStep = a.ReadAs<uint64_t>();
+        if (version >= 1) a >> e.lastReadTravel;
         e.visitStartEstimate = readEst(a);
         const auto est = readEst(a);
         e.estimator = readEstimator(a, est);
@@ -135,7 +137,7 @@ void readEntries(CArchive& a, TABLE& t) {
 }  // namespace
 
 uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
-    return 0;
+    return 1;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
@@ -153,18 +155,20 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << lo.rangeBearing.sigmaRange << lo.rangeBearing.sigmaBearing;
     out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.robotUpdate));
     out.WriteAs<uint64_t>(lo.revisitMinGap);
-    out << lo.rbUseLandmarkCov;
+    out << lo.rbUseLandmarkCov << lo.revisitMinTravel;  // v1: travel
     out << m_landmarkNames;
-    out.WriteAs<uint64_t>(m_rfidSteps);
-    out.WriteAs<uint64_t>(m_rbSteps);
+    out.WriteAs<uint64_t>(m_track[0].steps);
+    out.WriteAs<uint64_t>(m_track[1].steps);
     out.WriteAs<uint64_t>(m_totalTouched);
+    for (const auto& t : m_track) out << t.travel << t.hasPose << t.lastX << t.lastY;
     writeEntries(out, tags());
     writeEntries(out, landmarks());
 }
 
 void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
     switch (version) {
-        case 0: {
+        case 0:
+        case 1: {
             in >> genericMapParams;
             auto& io = insertionOptions;
             io.estimator = static_cast<TTagEstimatorKind>(in.ReadAs<uint8_t>());
@@ -182,13 +186,18 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
             lo.robotUpdate = static_cast<TRobotUpdatePolicy>(in.ReadAs<uint8_t>());
             lo.revisitMinGap = in.ReadAs<uint64_t>();
             in >> lo.rbUseLandmarkCov;
+            lo.revisitMinTravel = 0;
+            if (version >= 1) in >> lo.revisitMinTravel;
             in >> m_landmarkNames;
-            m_rfidSteps = in.ReadAs<uint64_t>();
-            m_rbSteps = in.ReadAs<uint64_t>();
+            m_track[0] = m_track[1] = TSensorTrack();
+            m_track[0].steps = in.ReadAs<uint64_t>();
+            m_track[1].steps = in.ReadAs<uint64_t>();
             m_totalTouched = in.ReadAs<uint64_t>();
+            if (version >= 1)
+                for (auto& t : m_track) in >> t.travel >> t.hasPose >> t.lastX >> t.lastY;
             m_lastTouched = 0;
-            readEntries(in, m_tags);
-            readEntries(in, m_landmarks);
+            readEntries(in, m_tags, version);
+            readEntries(in, m_landmarks, version);
         } break;
         default:
             MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);

@@ -67,7 +67,8 @@ const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowed
         "detection_model",      "beta",
         "gaussian_sigma_scale", "rb_sigma_range",
         "rb_sigma_bearing_deg", "robot_update",
-        "revisit_min_gap",      "rb_use_landmark_cov"};
+        "revisit_min_gap",      "revisit_min_travel",
+        "rb_use_landmark_cov"};
     return k;
 }
 
@@ -87,6 +88,8 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
     robotUpdate = static_cast<TRobotUpdatePolicy>(rfir::readIniEnum(
         c, s, "robot_update", kPolicyNames, static_cast<size_t>(robotUpdate)));
     revisitMinGap = rfir::readIniPositiveInt(c, s, "revisit_min_gap", revisitMinGap);
+    revisitMinTravel =
+        rfir::readIniDouble(c, s, "revisit_min_travel", revisitMinTravel, 0.0, false);
     rbUseLandmarkCov = rfir::readIniEnum(c, s, "rb_use_landmark_cov", {"false", "true"},
                                          rbUseLandmarkCov ? 1 : 0) == 1;
 }
@@ -101,6 +104,7 @@ void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) 
       << "robot_update         = " << kPolicyNames[static_cast<size_t>(robotUpdate)]
       << "\n"
       << "revisit_min_gap      = " << revisitMinGap << "\n"
+      << "revisit_min_travel   = " << revisitMinTravel << "\n"
       << "rb_use_landmark_cov  = " << (rbUseLandmarkCov ? "true" : "false") << "\n";
 }
 

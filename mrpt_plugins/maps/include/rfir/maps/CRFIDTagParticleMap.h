@@ -56,6 +56,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         uint64_t detections = 0;    //!< number of (reader, tag) reads
         uint64_t visits = 0;        //!< number of visits (first pass = 1)
         uint64_t lastReadStep = 0;  //!< index (1-based) of the last observation read in
+        double lastReadTravel = 0;  //!< robot path length (m) at that observation
         const std::vector<mrpt::math::TPoint2D>& particles() const;
     };
 
@@ -140,6 +141,10 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         rfir::models::RangeBearingParams rangeBearing;
         TRobotUpdatePolicy robotUpdate = TRobotUpdatePolicy::Literal;  //!< robot_update
         size_t revisitMinGap = 1;  //!< revisit_min_gap (observations without the tag)
+        /** revisit_min_travel (m): a new visit also needs this much robot path
+         * since the tag's last read (0 = off); ties the reads of one pass under
+         * several readers into one visit. */
+        double revisitMinTravel = 0;
         /** rb_use_landmark_cov: add the landmark estimate's covariance to the
          * range-bearing noise when weighing the robot (false = the seeds). */
         bool rbUseLandmarkCov = false;
@@ -170,7 +175,16 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     using TTable = std::unordered_map<std::string, TTagEntry>;
     TTable m_tags, m_landmarks;
     std::vector<std::string> m_landmarkNames;
-    uint64_t m_rfidSteps = 0, m_rbSteps = 0;  //!< observations inserted, per sensor
+    /** Per sensor (0 = RFID, 1 = range-bearing): observations inserted, robot
+     * path length over them (straight segments between insert poses), and the
+     * last insert pose. Visits are counted on these. */
+    struct TSensorTrack {
+        uint64_t steps = 0;
+        double travel = 0;
+        bool hasPose = false;
+        double lastX = 0, lastY = 0;
+    };
+    TSensorTrack m_track[2];
     size_t m_lastTouched = 0;
     uint64_t m_totalTouched = 0;
 

@@ -101,14 +101,17 @@ bool inside(const TPlotAxes& ax, double x, double y) {
     return x >= ax.left && x <= ax.right && y >= ax.top && y <= ax.bottom;
 }
 
-void drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
+/** Returns whether some ellipse was large enough to show outside its circle. */
+bool drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
+    bool ellipses = false;
     const double s = (ax.right - ax.left) / (ax.x1 - ax.x0);
     std::map<std::pair<int, std::string>, const TMapEntry*> truth;
     for (const auto& g : f.gtMap) truth[{int(g.kind), g.id}] = &g;
     for (const auto& e : f.estMap) {
         const double x = ax.px(e.x), y = ax.py(e.y);
         if (!inside(ax, x, y) || e.kind == TMapEntry::Kind::Emitter) continue;
-        if (f.showEllipses && e.sx && e.sy && (*e.sx * s >= 1 || *e.sy * s >= 1)) {
+        if (f.showEllipses && e.sx && e.sy && 2 * std::max(*e.sx, *e.sy) * s > 7) {
+            ellipses = true;
             mrpt::math::CMatrixFixed<double, 2, 2> cov;
             cov(0, 0) = std::pow(std::max(*e.sx * s, 0.5), 2);
             cov(1, 1) = std::pow(std::max(*e.sy * s, 0.5), 2);
@@ -122,6 +125,7 @@ void drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
         img.drawCircle(int(std::lround(x)), int(std::lround(y)), 6, kEstTag, 2);
         if (f.showIds) text(img, int(x) + 8, int(y) - 14, e.id, kEstTag, kSmall);
     }
+    return ellipses;
 }
 
 void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
@@ -168,9 +172,14 @@ mrpt::img::CImage renderMapFigure(const TMapFigure& f, TPlotAxes* axesOut) {
     for (const auto& p : f.extraPaths) polyline(img, ax, xy(p.path), p.color, p.width);
     if (f.gtPath) polyline(img, ax, xy(*f.gtPath), kGtPath, 2);
     if (f.estPath) polyline(img, ax, xy(*f.estPath), kEstPath, 2);
-    drawEstimated(img, ax, f);
+    auto shown = legend;
+    if (!drawEstimated(img, ax, f))  // ellipses hidden under their circles
+        shown.erase(
+            std::remove_if(shown.begin(), shown.end(),
+                           [](const TLegendEntry& e) { return e.color == kEllipse; }),
+            shown.end());
     img.rectangle(ax.left, ax.top, ax.right, ax.bottom, TColor(60, 60, 60), 1);
-    drawLegend(img, right + 14, top, legend);
+    drawLegend(img, right + 14, top, shown);
     if (!f.title.empty())
         text(img, (left + right) / 2, 12, f.title, TColor(0, 0, 0), kLarge,
              Align::Center);

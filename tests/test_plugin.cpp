@@ -74,7 +74,10 @@ TEST(Plugin, LoadingItRegistersEveryLinkedLibrarysClasses)
         {"rfir_ir", "rfir::maps::CIREmitterMap"}};
     for (const auto& [lib, c] : expected)
     {
-        if (list.find(lib) != std::string::npos) EXPECT_TRUE(cls.count(c)) << lib << ": " << c;
+        if (list.find(lib) != std::string::npos)
+        {
+            EXPECT_TRUE(cls.count(c)) << lib << ": " << c;
+        }
     }
     std::cerr << "plugin libraries: " << list << "; rfir classes registered: " << cls.size()
               << "\n";

@@ -1,0 +1,112 @@
+/* rfir-bench: the measurements (docs/benchmark.md) and their report. */
+#pragma once
+
+#include <rfir/slam/slam_engine.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rfir::bench
+{
+/** What one run measures (the command line). */
+struct TBenchOptions
+{
+    std::vector<size_t> sweepM{100, 200, 500, 1000, 2000, 5000};
+    std::vector<size_t> sweepN{10, 100, 1000, 10000, 100000};
+    size_t fixedN = 1000;  //!< tags mapped in the sweep over M
+    size_t fixedM = 500;   //!< robot particles in the sweep over N
+    std::vector<std::string> methods{"ps", "pf", "fastslam"};
+    size_t timedUpdates = 200;  //!< timed updates per case
+    size_t warmupUpdates = 10;  //!< untimed updates before them
+    /** FastSLAM cases with M * N above this are skipped (O(M N) memory). */
+    double maxFastSlamMN = 5e7;
+    double realtimeSeconds = 1200;  //!< simulated length of the real-time run
+    std::string configDir;          //!< stock INIs (slam_*.ini, bench_*.ini)
+    uint64_t seed = 1;
+    bool quick = false;
+    bool realtime = true;  //!< run the whole offline runs
+};
+
+/** Heap bytes in use (glibc mallinfo2: uordblks + hblkhd, all arenas). */
+size_t heapInUse();
+
+/** One method at one (M, N). */
+struct TCaseResult
+{
+    std::string method;
+    size_t M = 0, N = 0;
+    bool skipped = false;
+    std::string skipReason;
+    size_t updates = 0;
+    double medianUs = 0, meanUs = 0, p90Us = 0;  //!< per timed update
+    double floorRatio = 0;     //!< median / floor median at the same M
+    double vsPsRatio = 0;      //!< median / PS-SLAM median at the same (M, N)
+    size_t stateBytes = 0;     //!< heap in use by the state after the timed updates
+    size_t peakBytes = 0;      //!< largest heap in use during the build and timing
+    double buildSeconds = 0;   //!< building the N-tag state
+    size_t tagsMapped = 0;     //!< landmarks the engine reports
+};
+
+/** The floor at one M: motion noise draw + one detection likelihood per particle. */
+struct TFloorResult
+{
+    size_t M = 0;
+    double medianUs = 0, meanUs = 0;
+};
+
+/** The whole offline PS-SLAM run over a simulated floor. */
+struct TRealtimeResult
+{
+    std::string config;  //!< INI of the simulated run
+    std::string method;
+    size_t M = 0;
+    double simSeconds = 0;  //!< robot time covered
+    size_t steps = 0, tagsInWorld = 0, tagsMapped = 0, detections = 0;
+    double simulateSeconds = 0;  //!< simulator (not counted in the speed)
+    double slamSeconds = 0;      //!< every engine step, end to end
+    double speedup = 0;          //!< simSeconds / slamSeconds
+};
+
+/** A pass/fail target with the numbers that decide it. */
+struct TTarget
+{
+    std::string name;
+    bool pass = false;
+    bool measured = true;  //!< false: the cases it needs were not run
+    std::string detail;
+};
+
+struct TBenchReport
+{
+    TBenchOptions options;
+    std::string host;  //!< CPU model and core count
+    std::vector<TFloorResult> floor;
+    std::vector<TCaseResult> sweepM, sweepN;
+    std::vector<TRealtimeResult> realtime;
+    std::vector<TTarget> targets;
+};
+
+/** The stock INI of a method with [slam] robot_particles = M. */
+rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& method,
+                                    size_t M);
+
+/** Builds an N-tag state with the method itself, then times updates. */
+TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M, size_t N);
+
+TFloorResult runFloor(const TBenchOptions& o, size_t M);
+
+/** Simulates the run once, then times each (method, M) on it. */
+std::vector<TRealtimeResult> runRealtime(
+    const TBenchOptions& o, const std::vector<std::pair<std::string, size_t>>& runs);
+
+/** Fills the ratios (to the floor, to PS-SLAM) and the targets. */
+void evaluate(TBenchReport& r);
+
+void printTable(const TBenchReport& r, std::ostream& out);
+std::string toJson(const TBenchReport& r);
+/** bench_time_vs_M.png, bench_time_vs_N.png, bench_memory_vs_N.png in dir. */
+void writePlots(const TBenchReport& r, const std::string& dir);
+
+}  // namespace rfir::bench

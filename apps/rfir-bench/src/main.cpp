@@ -1,0 +1,201 @@
+/* rfir-bench: time per SLAM update of PS-SLAM, PF-SLAM and FastSLAM against
+ * the robot particles M and the mapped tags N, their memory, a floor loop, and
+ * whole offline runs against real time. See docs/benchmark.md. */
+#include "bench.h"
+
+#include <rfir/common/atomic_file.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/system/filesystem.h>
+
+#include <unistd.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace
+{
+using namespace rfir::bench;
+
+std::string exeDir()
+{
+    char buf[4096];
+    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+    if (n <= 0) return ".";
+    buf[n] = 0;
+    return mrpt::system::extractFileDirectory(buf);
+}
+
+std::string defaultConfigDir()
+{
+    const std::string installed = exeDir() + "/../share/rfir/config_ini";
+    if (mrpt::system::fileExists(installed + "/slam_ps.ini")) return installed;
+    return std::string(RFIR_SOURCE_DIR) + "/config_ini";
+}
+
+std::string hostDescription()
+{
+    std::ifstream f("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(f, line))
+        if (line.rfind("model name", 0) == 0)
+        {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
+}
+
+std::vector<size_t> parseList(const std::string& opt, const std::string& s)
+{
+    std::vector<size_t> v;
+    std::stringstream ss(s);
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+        size_t pos = 0;
+        unsigned long long x = 0;
+        try
+        {
+            x = std::stoull(item, &pos);
+        }
+        catch (const std::exception&)
+        {
+            pos = 0;
+        }
+        if (pos == 0 || pos != item.size() || x == 0)
+            throw std::invalid_argument(opt + ": '" + item + "' is not a positive integer");
+        v.push_back(size_t(x));
+    }
+    if (v.empty()) throw std::invalid_argument(opt + ": empty list");
+    return v;
+}
+
+std::vector<std::string> parseMethods(const std::string& s)
+{
+    std::vector<std::string> v;
+    std::stringstream ss(s);
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+        if (item != "ps" && item != "pf" && item != "fastslam")
+            throw std::invalid_argument("--methods: '" + item + "' is not ps, pf or fastslam");
+        v.push_back(item);
+    }
+    if (v.empty()) throw std::invalid_argument("--methods: empty list");
+    return v;
+}
+
+void runAll(TBenchReport& r)
+{
+    const auto& o = r.options;
+    auto progress = [](const std::string& s) { std::cerr << "rfir-bench: " << s << std::endl; };
+    for (size_t M : o.sweepM) r.floor.push_back(runFloor(o, M));
+    bool fixedMInFloor = false;
+    for (const auto& f : r.floor) fixedMInFloor |= f.M == o.fixedM;
+    if (!fixedMInFloor) r.floor.push_back(runFloor(o, o.fixedM));
+    for (size_t M : o.sweepM)
+        for (const auto& m : o.methods)
+        {
+            progress(m + " M=" + std::to_string(M) + " N=" + std::to_string(o.fixedN));
+            r.sweepM.push_back(runCase(o, m, M, o.fixedN));
+        }
+    for (size_t N : o.sweepN)
+        for (const auto& m : o.methods)
+        {
+            progress(m + " M=" + std::to_string(o.fixedM) + " N=" + std::to_string(N));
+            r.sweepN.push_back(runCase(o, m, o.fixedM, N));
+        }
+    if (!o.realtime) return;
+    progress("whole runs (simulating " + std::to_string(int(o.realtimeSeconds)) + " s)");
+    std::vector<std::pair<std::string, size_t>> runs;
+    for (const auto& m : o.methods) runs.push_back({m, 100});
+    for (const auto& m : o.methods) runs.push_back({m, 500});
+    r.realtime = runRealtime(o, runs);
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    try
+    {
+        TCLAP::CmdLine cmd(
+            "rfir-bench: time per SLAM update of PS-SLAM, PF-SLAM and FastSLAM against the "
+            "number of robot particles M and of mapped tags N, the state's memory, a floor "
+            "loop, and a whole 20-minute offline run against real time. Prints a table; "
+            "optionally writes JSON and PNG plots. Single thread; fixed seeds.",
+            ' ', "0.1");
+        TCLAP::SwitchArg quick("", "quick", "small fast smoke run (M 100,500; N 10,1000; 20 "
+                               "updates; a 60 s whole run)", cmd);
+        TCLAP::ValueArg<std::string> json("", "json", "write the results as JSON", false, "",
+                                          "FILE", cmd);
+        TCLAP::ValueArg<std::string> plots("", "plots", "write bench_*.png plots there",
+                                           false, "", "DIR", cmd);
+        TCLAP::ValueArg<std::string> ms("", "m", "robot particle counts (default "
+                                        "100,200,500,1000,2000,5000)", false, "", "LIST", cmd);
+        TCLAP::ValueArg<std::string> ns("", "n", "mapped tag counts (default "
+                                        "10,100,1000,10000,100000)", false, "", "LIST", cmd);
+        TCLAP::ValueArg<size_t> updates("", "updates", "timed updates per case (default 200)",
+                                        false, 200, "K", cmd);
+        TCLAP::ValueArg<double> maxMN("", "max-fastslam-mn", "skip FastSLAM cases with M*N "
+                                      "above this (default 5e7)", false, 5e7, "X", cmd);
+        TCLAP::ValueArg<double> rtSec("", "realtime-seconds", "robot time of the whole run "
+                                      "(default 1200)", false, 1200, "S", cmd);
+        TCLAP::ValueArg<std::string> methods("", "methods", "methods to run (default "
+                                             "ps,pf,fastslam)", false, "", "LIST", cmd);
+        TCLAP::SwitchArg noRealtime("", "no-realtime", "skip the whole offline runs", cmd);
+        TCLAP::ValueArg<std::string> cfgDir("", "config-dir", "folder of the stock INIs",
+                                            false, "", "DIR", cmd);
+        TCLAP::ValueArg<uint64_t> seed("", "seed", "random seed", false, 1, "N", cmd);
+        if (!cmd.parse(argc, argv)) return 0;
+
+        TBenchReport r;
+        auto& o = r.options;
+        if (quick.getValue())
+        {
+            o.quick = true;
+            o.sweepM = {100, 500};
+            o.sweepN = {10, 1000};
+            o.timedUpdates = 20;
+            o.warmupUpdates = 4;
+            o.realtimeSeconds = 60;
+        }
+        if (ms.isSet()) o.sweepM = parseList("--m", ms.getValue());
+        if (ns.isSet()) o.sweepN = parseList("--n", ns.getValue());
+        for (size_t N : o.sweepN)
+            if (N < 8) throw std::invalid_argument("--n: every N must be >= 8");
+        if (updates.isSet()) o.timedUpdates = updates.getValue();
+        if (o.timedUpdates == 0) throw std::invalid_argument("--updates must be > 0");
+        if (rtSec.isSet()) o.realtimeSeconds = rtSec.getValue();
+        if (!(o.realtimeSeconds > 0)) throw std::invalid_argument("--realtime-seconds must be > 0");
+        o.maxFastSlamMN = maxMN.getValue();
+        if (methods.isSet()) o.methods = parseMethods(methods.getValue());
+        o.realtime = !noRealtime.getValue();
+        o.seed = seed.getValue();
+        o.configDir = cfgDir.isSet() ? cfgDir.getValue() : defaultConfigDir();
+        if (plots.isSet() && !mrpt::system::directoryExists(plots.getValue()))
+            throw std::invalid_argument("--plots: no folder '" + plots.getValue() + "'");
+        r.host = hostDescription();
+
+        runAll(r);
+        evaluate(r);
+        printTable(r, std::cout);
+        if (json.isSet())
+            rfir::common::writeFileAtomically(json.getValue(),
+                                              [&](std::ostream& f) { f << toJson(r); });
+        if (plots.isSet()) writePlots(r, plots.getValue());
+        return 0;
+    }
+    catch (const TCLAP::ArgException& e)
+    {
+        std::cerr << "rfir-bench: " << e.error() << " (" << e.argId() << ")\n";
+        return 2;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "rfir-bench: error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,90 @@
+/* rfir-bench: a whole offline run, timed end to end against the robot time it
+ * covers (config_ini/bench_floor_30x20.ini, simulated in-process). */
+#include "bench.h"
+
+#include <rfir/sim/simulator.h>
+
+#include <mrpt/random/RandomGenerators.h>
+
+#include <chrono>
+#include <string>
+
+namespace rfir::bench
+{
+namespace
+{
+std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out, size_t& dets)
+{
+    std::vector<rfir::slam::TSlamInput> v;
+    std::optional<mrpt::poses::CPose2D> last;
+    dets = 0;
+    for (const auto& s : out.steps)
+    {
+        rfir::slam::TSlamInput in;
+        in.t = s.t;
+        if (s.odometry)
+        {
+            if (last) in.odometryIncrement = *s.odometry - *last;
+            last = s.odometry;
+        }
+        for (const auto& o : s.obs)
+        {
+            if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
+            {
+                in.rfid = r;
+                dets += r->detectionCount();
+            }
+            if (auto b = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
+                in.rb = b;
+        }
+        v.push_back(std::move(in));
+    }
+    return v;
+}
+}  // namespace
+
+std::vector<TRealtimeResult> runRealtime(
+    const TBenchOptions& o, const std::vector<std::pair<std::string, size_t>>& runs)
+{
+    using Clock = std::chrono::steady_clock;
+    const std::string config = o.configDir + "/bench_floor_30x20.ini";
+    char dur[64];
+    std::snprintf(dur, sizeof(dur), "simulation.max_duration=%g", o.realtimeSeconds);
+    const auto simCfg = rfir::sim::loadSimConfig(config, {dur});
+    auto t0 = Clock::now();
+    const auto sim = rfir::sim::simulate(simCfg, o.seed);
+    const double simulateSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    size_t dets = 0;
+    const auto inputs = toInputs(sim, dets);
+    size_t tags = 0;
+    for (const auto& e : sim.gtMap)
+        if (e.kind == rfir::common::TMapEntry::Kind::Tag) tags++;
+    const mrpt::poses::CPose2D start =
+        sim.groundTruth.empty() ? mrpt::poses::CPose2D() : sim.groundTruth.front().pose;
+
+    std::vector<TRealtimeResult> out;
+    for (const auto& [method, M] : runs)
+    {
+        TRealtimeResult r;
+        r.config = config;
+        r.method = method;
+        r.M = M;
+        r.simulateSeconds = simulateSeconds;
+        r.detections = dets;
+        r.steps = inputs.size();
+        r.simSeconds = inputs.empty() ? 0 : inputs.back().t - inputs.front().t;
+        r.tagsInWorld = tags;
+        mrpt::random::getRandomGenerator().randomize(uint32_t(o.seed));
+        const auto cfg = benchConfig(o, method, M);
+        auto engine = rfir::slam::makeEngine(cfg, sim.header);
+        t0 = Clock::now();
+        const auto run = rfir::slam::runEngine(*engine, start, inputs);
+        r.slamSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        r.tagsMapped = run.map.size();
+        r.speedup = r.slamSeconds > 0 ? r.simSeconds / r.slamSeconds : 0;
+        out.push_back(r);
+    }
+    return out;
+}
+
+}  // namespace rfir::bench

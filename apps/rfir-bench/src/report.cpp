@@ -1,0 +1,206 @@
+/* rfir-bench: the table (stdout), the JSON file and the PNG plots. */
+#include "bench.h"
+
+#include <rfir/eval/plot.h>
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace rfir::bench
+{
+namespace
+{
+const char* methodLabel(const std::string& m)
+{
+    return m == "ps" ? "PS-SLAM" : m == "pf" ? "PF-SLAM" : m == "fastslam" ? "FastSLAM" : "?";
+}
+
+std::string row(const char* f, ...) __attribute__((format(printf, 1, 2)));
+std::string row(const char* f, ...)
+{
+    char buf[512];
+    va_list ap;
+    va_start(ap, f);
+    std::vsnprintf(buf, sizeof(buf), f, ap);
+    va_end(ap);
+    return buf;
+}
+
+void printCases(const char* title, const std::vector<TCaseResult>& v, std::ostream& out)
+{
+    out << title << "\n"
+        << row("%-9s %6s %7s %10s %10s %10s %8s %8s %10s %10s %8s\n", "method", "M", "N",
+               "median_us", "p90_us", "mean_us", "x_floor", "x_PS", "state_MB", "peak_MB",
+               "build_s");
+    for (const auto& c : v)
+    {
+        if (c.skipped)
+        {
+            out << row("%-9s %6zu %7zu   skipped: %s\n", methodLabel(c.method), c.M, c.N,
+                       c.skipReason.c_str());
+            continue;
+        }
+        out << row("%-9s %6zu %7zu %10.1f %10.1f %10.1f %8.2f %8.2f %10.2f %10.2f %8.2f\n",
+                   methodLabel(c.method), c.M, c.N, c.medianUs, c.p90Us, c.meanUs,
+                   c.floorRatio, c.vsPsRatio, c.stateBytes / 1e6, c.peakBytes / 1e6,
+                   c.buildSeconds);
+    }
+    out << "\n";
+}
+
+void jsonCase(std::ostringstream& o, const TCaseResult& c)
+{
+    o << "{\"method\": \"" << c.method << "\", \"M\": " << c.M << ", \"N\": " << c.N;
+    if (c.skipped)
+    {
+        o << ", \"skipped\": true, \"reason\": \"" << c.skipReason << "\"}";
+        return;
+    }
+    o << ", \"skipped\": false, \"updates\": " << c.updates << ", \"median_us\": " << c.medianUs
+      << ", \"p90_us\": " << c.p90Us << ", \"mean_us\": " << c.meanUs
+      << ", \"x_floor\": " << c.floorRatio << ", \"x_ps\": " << c.vsPsRatio
+      << ", \"state_bytes\": " << c.stateBytes << ", \"peak_bytes\": " << c.peakBytes
+      << ", \"build_s\": " << c.buildSeconds << ", \"landmarks\": " << c.tagsMapped << "}";
+}
+
+std::string jsonEscape(const std::string& s)
+{
+    std::string r;
+    for (char ch : s)
+    {
+        if (ch == '"' || ch == '\\') r += '\\';
+        r += ch;
+    }
+    return r;
+}
+}  // namespace
+
+void printTable(const TBenchReport& r, std::ostream& out)
+{
+    out << "rfir-bench on " << r.host << "; single thread; times per SLAM update, median of "
+        << r.options.timedUpdates << " (2 known tags read per update); memory = heap bytes "
+        << "in use by the state (glibc mallinfo2)\n\n";
+    out << "floor (motion noise draw + 1 detection likelihood per particle)\n"
+        << row("%6s %10s %10s\n", "M", "median_us", "mean_us");
+    for (const auto& f : r.floor) out << row("%6zu %10.2f %10.2f\n", f.M, f.medianUs, f.meanUs);
+    out << "\n";
+    printCases(("time and memory against M (N = " + std::to_string(r.options.fixedN) +
+                " tags mapped)")
+                   .c_str(),
+               r.sweepM, out);
+    printCases(("time and memory against N (M = " + std::to_string(r.options.fixedM) +
+                " robot particles)")
+                   .c_str(),
+               r.sweepN, out);
+    out << "whole offline runs\n"
+        << row("%-9s %6s %9s %7s %7s %7s %9s %10s %10s\n", "method", "M", "robot_s",
+               "steps", "tags", "mapped", "reads", "slam_s", "x_realtime");
+    for (const auto& x : r.realtime)
+        out << row("%-9s %6zu %9.0f %7zu %7zu %7zu %9zu %10.3f %10.0f\n",
+                   methodLabel(x.method), x.M, x.simSeconds, x.steps, x.tagsInWorld,
+                   x.tagsMapped, x.detections, x.slamSeconds, x.speedup);
+    out << "\ntargets\n";
+    for (const auto& t : r.targets)
+        out << (t.measured ? (t.pass ? "  PASS  " : "  FAIL  ") : "  n/a   ") << t.name
+            << ": " << t.detail << "\n";
+}
+
+std::string toJson(const TBenchReport& r)
+{
+    std::ostringstream o;
+    o << std::setprecision(6) << "{\n  \"host\": \"" << jsonEscape(r.host)
+      << "\",\n  \"seed\": " << r.options.seed << ",\n  \"quick\": "
+      << (r.options.quick ? "true" : "false") << ",\n  \"timed_updates\": "
+      << r.options.timedUpdates << ",\n  \"memory_measure\": \"glibc mallinfo2 heap in use\""
+      << ",\n  \"floor\": [";
+    for (size_t i = 0; i < r.floor.size(); i++)
+        o << (i ? ", " : "") << "{\"M\": " << r.floor[i].M << ", \"median_us\": "
+          << r.floor[i].medianUs << ", \"mean_us\": " << r.floor[i].meanUs << "}";
+    const std::pair<const char*, const std::vector<TCaseResult>*> sweeps[] = {
+        {"sweep_M", &r.sweepM}, {"sweep_N", &r.sweepN}};
+    for (const auto& [name, v] : sweeps)
+    {
+        o << "],\n  \"" << name << "\": [";
+        for (size_t i = 0; i < v->size(); i++)
+        {
+            o << (i ? ",\n    " : "\n    ");
+            jsonCase(o, (*v)[i]);
+        }
+    }
+    o << "],\n  \"realtime\": [";
+    for (size_t i = 0; i < r.realtime.size(); i++)
+    {
+        const auto& x = r.realtime[i];
+        o << (i ? ", " : "") << "{\"method\": \"" << x.method << "\", \"M\": " << x.M
+          << ", \"robot_seconds\": " << x.simSeconds << ", \"steps\": " << x.steps
+          << ", \"tags_in_world\": " << x.tagsInWorld << ", \"tags_mapped\": " << x.tagsMapped
+          << ", \"reads\": " << x.detections << ", \"slam_seconds\": " << x.slamSeconds
+          << ", \"x_realtime\": " << x.speedup << "}";
+    }
+    o << "],\n  \"targets\": [";
+    for (size_t i = 0; i < r.targets.size(); i++)
+    {
+        const auto& t = r.targets[i];
+        o << (i ? "," : "") << "\n    {\"name\": \"" << jsonEscape(t.name) << "\", \"result\": \""
+          << (t.measured ? (t.pass ? "pass" : "fail") : "not measured")
+          << "\", \"detail\": \"" << jsonEscape(t.detail) << "\"}";
+    }
+    o << "]\n}\n";
+    return o.str();
+}
+
+void writePlots(const TBenchReport& r, const std::string& dir)
+{
+    using rfir::eval::TLinePlot;
+    using rfir::eval::TSeries;
+    auto series = [&](const std::vector<TCaseResult>& v, bool byM, bool memory) {
+        std::vector<TSeries> out;
+        for (const auto& m : r.options.methods)
+        {
+            TSeries s;
+            s.label = methodLabel(m);
+            for (const auto& c : v)
+                if (c.method == m && !c.skipped)
+                {
+                    s.x.push_back(double(byM ? c.M : c.N));
+                    s.y.push_back(memory ? c.stateBytes / 1e6 : c.medianUs);
+                }
+            out.push_back(s);
+        }
+        return out;
+    };
+    TLinePlot tm;
+    tm.title = "Time per SLAM update vs robot particles (N = " +
+               std::to_string(r.options.fixedN) + " tags)";
+    tm.xLabel = "robot particles M";
+    tm.yLabel = "median time per update (us)";
+    tm.series = series(r.sweepM, true, false);
+    TSeries fl;
+    fl.label = "floor";
+    for (const auto& f : r.floor) fl.x.push_back(double(f.M)), fl.y.push_back(f.medianUs);
+    tm.series.push_back(fl);
+    tm.logX = tm.logY = true;
+    rfir::eval::plotLines(dir + "/bench_time_vs_M.png", tm);
+
+    TLinePlot tn;
+    tn.title = "Time per SLAM update vs mapped tags (M = " + std::to_string(r.options.fixedM) + ")";
+    tn.xLabel = "mapped tags N";
+    tn.yLabel = "median time per update (us)";
+    tn.series = series(r.sweepN, false, false);
+    tn.logX = tn.logY = true;
+    rfir::eval::plotLines(dir + "/bench_time_vs_N.png", tn);
+
+    TLinePlot mn;
+    mn.title = "State memory vs mapped tags (M = " + std::to_string(r.options.fixedM) + ")";
+    mn.xLabel = "mapped tags N";
+    mn.yLabel = "heap in use by the state (MB)";
+    mn.series = series(r.sweepN, false, true);
+    mn.logX = mn.logY = true;
+    rfir::eval::plotLines(dir + "/bench_memory_vs_N.png", mn);
+}
+
+}  // namespace rfir::bench

@@ -1,0 +1,106 @@
+/* rfir-bench: one method at one (M, N): build the state, time the updates. */
+#include "bench.h"
+#include "synthetic_drive.h"
+
+#include <rfir/slam/slam_config.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/system/filesystem.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+#include <stdexcept>
+
+namespace rfir::bench
+{
+using Clock = std::chrono::steady_clock;
+
+rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& method,
+                                    size_t M)
+{
+    const std::string path = o.configDir + "/slam_" + method + ".ini";
+    if (!mrpt::system::fileExists(path))
+        throw std::runtime_error("cannot read the stock INI '" + path + "'");
+    mrpt::config::CConfigFile f(path);
+    f.write("slam", "robot_particles", std::to_string(M));
+    auto cfg = rfir::slam::loadSlamConfig(f, method);
+    cfg.seed = o.seed;
+    return cfg;
+}
+
+namespace
+{
+double percentile(std::vector<double> v, double q)
+{
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    const size_t i = std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5));
+    return v[i];
+}
+
+/** Runs one step, tracking the heap's high-water mark. */
+struct TStepper
+{
+    rfir::slam::CSlamEngine& engine;
+    size_t base;
+    size_t peak = 0;
+    double step(const rfir::slam::TSlamInput& in)
+    {
+        const auto t0 = Clock::now();
+        engine.step(in);
+        const double dt = std::chrono::duration<double>(Clock::now() - t0).count();
+        peak = std::max(peak, heapInUse() - std::min(base, heapInUse()));
+        return dt;
+    }
+};
+}  // namespace
+
+TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M, size_t N)
+{
+    TCaseResult r;
+    r.method = method;
+    r.M = M;
+    r.N = N;
+    if (method == "fastslam" && double(M) * double(N) > o.maxFastSlamMN)
+    {
+        r.skipped = true;
+        r.skipReason = "M*N above --max-fastslam-mn";
+        return r;
+    }
+    mrpt::random::getRandomGenerator().randomize(uint32_t(o.seed));
+    const auto cfg = benchConfig(o, method, M);
+    const CSyntheticDrive drive(N);
+    const size_t base = heapInUse();
+    {
+        auto engine = rfir::slam::makeEngine(cfg, rfir::obs::CObservationLogHeader());
+        engine->reset(mrpt::poses::CPose2D(0, 0, 0));
+        TStepper st{*engine, base};
+        const auto t0 = Clock::now();
+        for (size_t i = 0; i < drive.populationSteps(); i++)
+            st.step(drive.populationStep(i));
+        r.buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        for (size_t k = 0; k < o.warmupUpdates; k++) st.step(drive.timedStep(k));
+        std::vector<double> us;
+        for (size_t k = 0; k < o.timedUpdates; k++)
+        {
+            // Inputs are built outside the timed call.
+            const auto in = drive.timedStep(o.warmupUpdates + k);
+            us.push_back(1e6 * st.step(in));
+            if (std::getenv("RFIR_BENCH_TRACE")) std::fprintf(stderr, "%zu %.1f\n", k, us.back());
+        }
+        r.updates = us.size();
+        r.medianUs = percentile(us, 0.5);
+        r.p90Us = percentile(us, 0.9);
+        r.meanUs = us.empty() ? 0 : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
+        r.stateBytes = heapInUse() - std::min(base, heapInUse());
+        r.peakBytes = std::max(st.peak, r.stateBytes);
+        r.tagsMapped = engine->landmarks().size();
+    }
+    return r;
+}
+
+}  // namespace rfir::bench

@@ -119,6 +119,13 @@ TEST_F(EvalCli, MalformedInputsNameFileAndLine) {
     EXPECT_NE(r.rc, 0);
     EXPECT_NE(r.err.find("--gt-path"), std::string::npos) << r.err;
 
+    // An output that cannot be written: error, and no results printed.
+    r = run("--path " + est + " --gt-path " + gt + " --plot " +
+            (dir / "no/such/dir/f.png").string());
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.err.find("f.png"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+
     // No overlap in time between estimate and truth.
     const auto late = file("late.tum", "9 0 0 0 0 0 0 1\n");
     r = run("--path " + late + " --gt-path " + gt);

@@ -184,14 +184,15 @@ int run(const TArgs& a) {
         r.map = computeMapErrors(fig.estMap, fig.gtMap, k);
         if (info && !gt.empty()) addPassedOver(*r.map, fig.estMap, fig.gtMap, gt, *info);
     }
+    // Files first: a failure (e.g. a missing folder) then prints no results.
     const std::string json = toJson(r);
-    if (!a.jsonOnly) std::cout << formatErrorTable({r}) << "\n";
-    std::cout << json << std::endl;
+    if (!a.plot.empty()) plotMapFigure(a.plot, fig);
+    if (!a.errorPlot.empty()) writeErrorPlot(a.errorPlot, r, fig.title);
     if (!a.jsonFile.empty())
         rfir::common::writeFileAtomically(a.jsonFile,
                                           [&](std::ostream& o) { o << json << "\n"; });
-    if (!a.plot.empty()) plotMapFigure(a.plot, fig);
-    if (!a.errorPlot.empty()) writeErrorPlot(a.errorPlot, r, fig.title);
+    if (!a.jsonOnly) std::cout << formatErrorTable({r}) << "\n";
+    std::cout << json << std::endl;
     return 0;
 }
 }  // namespace

@@ -69,8 +69,15 @@ void buildEmitters(const TSimConfig& cfg, uint64_t seed, TWorld& w)
     lp.withRepeated = ir.withRepeated;
     lp.withUnique = ir.withUnique;
     lp.allUnique = ir.allUnique;
-    w.emitters = rfir::ir::makeEmitterLattice(
-        {cfg.areaMinX, cfg.areaMinY, cfg.areaMaxX, cfg.areaMaxY}, lp);
+    try
+    {
+        w.emitters = rfir::ir::makeEmitterLattice(
+            {cfg.areaMinX, cfg.areaMinY, cfg.areaMaxX, cfg.areaMaxY}, lp);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw std::invalid_argument(std::string("[ir] ") + e.what());
+    }
     for (auto& e : w.emitters)
         if (ir.heightSpread > 0) e.z += rng.drawUniform(-ir.heightSpread, ir.heightSpread);
     w.emitterFailed.assign(w.emitters.size(), false);

@@ -41,6 +41,24 @@ rfir::sim::TSimConfig setup(const std::string& name)
         c.trajectory.waypoints = 30;
         return c;
     }
+    if (name == "60mm_nobias" || name == "300mm_nobias")
+    {
+        // Only the random odometry noise: no per-run scale / heading biases.
+        auto c = name == "60mm_nobias" ? setup60mmLoop(3) : setup300mm(150);
+        c.odometry.scaleSigma = c.odometry.rotScaleSigma = 0;
+        c.odometry.headingDriftSigma = 0;
+        return c;
+    }
+    if (name == "60mm_lownoise" || name == "300mm_lownoise")
+    {
+        // A quieter odometry (heading random walk 1 mrad/sqrt(m), no biases).
+        auto c = name == "60mm_lownoise" ? setup60mmLoop(3) : setup300mm(150);
+        c.odometry.scaleSigma = c.odometry.rotScaleSigma = 0;
+        c.odometry.headingDriftSigma = 0;
+        c.odometry.kPhiXY = 0.001;
+        c.odometry.kXY = 0.005;
+        return c;
+    }
     if (name == "60mm_kidnap")
     {
         auto c = setup60mmLoop(2);

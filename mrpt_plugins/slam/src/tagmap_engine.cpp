@@ -30,6 +30,24 @@ struct TConsistency
     std::vector<TAnchor> anchors;
 };
 
+/** Range-bearing: Gaussian log-likelihood of the landmark point the reading
+ * implies, against the landmark estimate, with the sensor noise and the
+ * landmark's own uncertainty (a collapse test must not fire on a landmark
+ * that is merely poorly known). */
+double rbConsistencyLogLik(const mrpt::poses::CPose2D& sensor,
+                           const CRFIDTagParticleMap::TTagEntry& lm, const TDetection& d,
+                           const rfir::models::RangeBearingParams& rb)
+{
+    const double a = sensor.phi() + d.b;
+    const double px = sensor.x() + d.a * std::cos(a), py = sensor.y() + d.a * std::sin(a);
+    const double var = rb.sigmaRange * rb.sigmaRange +
+                       (d.a * rb.sigmaBearing) * (d.a * rb.sigmaBearing) +
+                       0.5 * (lm.estimate.cov(0, 0) + lm.estimate.cov(1, 1));
+    const double e2 = (px - lm.estimate.mean.x) * (px - lm.estimate.mean.x) +
+                      (py - lm.estimate.mean.y) * (py - lm.estimate.mean.y);
+    return -0.5 * e2 / var;
+}
+
 TConsistency checkConsistency(const CRFIDTagParticleMap& map,
                               const CRobotPoseParticles& pf,
                               const std::vector<TDetection>& dets)
@@ -58,8 +76,7 @@ TConsistency checkConsistency(const CRFIDTagParticleMap& map,
                 ll += map.detectionLogLikelihood(*known[k], pose,
                                                  {d.a, d.b, d.halfX, d.halfY});
             else
-                ll += rfir::models::rangeBearingLogLikelihood(
-                    (p.d + d.sensor).asTPose(), known[k]->estimate.mean, d.a, d.b, rb);
+                ll += rbConsistencyLogLik(p.d + d.sensor, *known[k], d, rb);
         }
         best = std::max(best, ll);
     }

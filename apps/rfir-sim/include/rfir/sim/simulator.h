@@ -12,6 +12,9 @@
  *   for (const auto& s : out.steps) { s.t; s.odometry; s.obs; s.truePose; }
  *   out.groundTruth;  out.gtMap;  out.header;
  *
+ * Step k is at t = cfg.startTime + k cfg.dt (startTime = 1 s: MRPT takes a zero
+ * timestamp as invalid); out.groundTruth[k] is the true pose of out.steps[k].
+ *
  * or from a stock INI:
  *   auto cfg = rfir::sim::loadSimConfig(RFIR_SOURCE_DIR
  *                                       "/config_ini/sim_rfid_300mm_4tags_random.ini");

@@ -1,0 +1,71 @@
+/* rfir-experiments: the experiment rows of SPEC section 9 (the seeds' tables
+ * and figures) as data: which simulated setup, which methods, which sweep
+ * points, and the numbers the seeds report for it. */
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace rfir::experiments {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/** One method of a row: a stock INI (config_ini/slam_<method>.ini) plus
+ * "section.key=value" edits. */
+struct TMethodSpec {
+    std::string label;   //!< e.g. "PF-SLAM"
+    std::string method;  //!< pf | ps | fastslam | odometry
+    std::vector<std::string> edits;
+};
+
+/** A seed table's row (mm, rad); NaN where the seed gives no number. */
+struct TSeedNumbers {
+    std::string label;  //!< method as in our rows
+    double x = kNaN, y = kNaN, theta = kNaN, dr = kNaN;
+    double tx = kNaN, ty = kNaN, dt = kNaN;
+    std::string note;  //!< e.g. "about", "> 300"
+};
+
+/** One simulated data set averaged into a point (e.g. one of the five
+ * predefined trajectories): a sim INI and overrides. */
+struct TSubRun {
+    std::string label;
+    std::string simIni;  //!< file name in the config folder
+    std::vector<std::string> simOverrides;
+};
+
+/** A point of a row: a table row has one; a sweep one per x value. */
+struct TPoint {
+    std::string label;
+    double x = 0;
+    std::vector<std::string> simOverrides;  //!< applied after the sub-run's
+    std::vector<std::string> slamEdits;     //!< applied to every method
+};
+
+enum class TRowKind {
+    Table,  //!< one point, errors table
+    Sweep,  //!< several points, line plots
+    Kidnap  //!< one point, error before / after the kidnapping
+};
+
+struct TRow {
+    std::string id, title, source;
+    TRowKind kind = TRowKind::Table;
+    std::vector<TSubRun> runs;
+    std::vector<TPoint> points;
+    std::vector<TMethodSpec> methods;
+    std::vector<TSeedNumbers> seedNumbers;
+    std::string seedClaim;  //!< what the seed reports, in words
+    bool figure = false;    //!< path/map figure of the first seed
+    std::string xLabel;
+    bool logX = false;
+    bool plotTime = false;  //!< sweep: also plot the time per update
+    unsigned maxSeeds = 0;  //!< > 0: at most this many of the seeds (long rows)
+};
+
+/** Every row; `quick` trims them (first sub-run, end points of sweeps). */
+std::vector<TRow> allRows(bool quick);
+
+}  // namespace rfir::experiments

@@ -1,0 +1,175 @@
+/* rfir-experiments: the experiments of SPEC section 9 in one process: each row
+ * simulates its data sets (rfir_sim), runs PS-SLAM, PF-SLAM, FastSLAM and dead
+ * reckoning on the same data (rfir_slam), scores them (rfir_eval) and
+ * aggregates over seeds into results.json, results.md and img/exp_*.png. */
+#include "report.h"
+
+#include <rfir/common/atomic_file.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/system/filesystem.h>
+
+#include <unistd.h>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+using namespace rfir::experiments;
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string exeDir() {
+    char buf[4096];
+    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+    if (n <= 0) return ".";
+    buf[n] = 0;
+    return mrpt::system::extractFileDirectory(buf);
+}
+
+std::vector<TRow> selectRows(const std::string& list, bool quick) {
+    auto rows = allRows(quick);
+    if (list.empty() || list == "all") return rows;
+    std::set<std::string> want;
+    std::stringstream ss(list);
+    for (std::string s; std::getline(ss, s, ',');)
+        if (!s.empty()) want.insert(s);
+    std::vector<TRow> out;
+    for (const auto& r : rows)
+        if (want.erase(r.id)) out.push_back(r);
+    if (!want.empty())
+        throw std::invalid_argument("--rows: unknown row '" + *want.begin() +
+                                    "' (see --list)");
+    return out;
+}
+
+/** Every (point, sub-run, seed, method) of a row. */
+TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds,
+                   const std::string& cfgDir, size_t idx, size_t nRows) {
+    if (row.maxSeeds && seeds.size() > row.maxSeeds) seeds.resize(row.maxSeeds);
+    TRowResults res;
+    res.row = row;
+    for (size_t p = 0; p < row.points.size(); p++)
+        for (size_t k = 0; k < row.runs.size(); k++)
+            for (uint64_t seed : seeds) {
+                const auto t0 = Clock::now();
+                auto data = simulateDataSet(cfgDir, row.runs[k], row.points[p], seed);
+                const bool first = p == 0 && k == 0 && seed == seeds.front();
+                std::fprintf(
+                    stderr, "[%zu/%zu] %s %s%s%s seed %llu (%zu steps):", idx + 1, nRows,
+                    row.id.c_str(), row.points[p].label.c_str(),
+                    row.points[p].label.empty() ? "" : " ", row.runs[k].label.c_str(),
+                    (unsigned long long)seed, data.sim.steps.size());
+                for (const auto& m : row.methods) {
+                    auto r = runMethod(cfgDir, data, m, row.points[p], seed, first);
+                    r.point = p;
+                    r.run = k;
+                    std::fprintf(stderr, " %s %.0f/%.0f mm", m.label.c_str(),
+                                 1e3 * robotMeanDist(r), 1e3 * tagMeanDist(r));
+                    if (first) res.firstRuns.push_back(r);
+                    r.estPath.clear();
+                    r.estMap.clear();
+                    r.eval.robot->perPose.clear();
+                    res.runs.push_back(std::move(r));
+                }
+                std::fprintf(stderr, " (%.1f s)\n", since(t0));
+                if (first) res.firstData = std::move(data);
+            }
+    return res;
+}
+
+void writeOutputs(const std::string& out, const std::vector<TRowResults>& results,
+                  const TMeta& meta, const std::string& notesFile, bool figures) {
+    std::string notes;
+    if (!notesFile.empty()) {
+        std::ifstream f(notesFile);
+        if (!f) throw std::runtime_error("cannot read --notes '" + notesFile + "'");
+        std::stringstream ss;
+        ss << f.rdbuf();
+        notes = ss.str();
+    }
+    if (figures)
+        for (const auto& r : results) writeFigures(out, r);
+    writeJson(out + "/results.json", results, meta);
+    const std::string md = markdownReport(results, meta, notes);
+    rfir::common::writeFileAtomically(out + "/results.md",
+                                      [&](std::ostream& o) { o << md; });
+    std::cerr << "rfir-experiments: wrote " << out << "/results.md, results.json"
+              << (figures ? ", img/exp_*.png" : "") << "\n";
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        TCLAP::CmdLine cmd(
+            "rfir-experiments: runs the experiment rows of the seeds' tables and figures "
+            "(PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on the same simulated data, "
+            "several seeds each) and writes OUT/results.json (every raw number), "
+            "OUT/results.md (tables beside the seeds' numbers) and OUT/img/exp_*.png.",
+            ' ', "0.1");
+        TCLAP::ValueArg<std::string> rows("", "rows",
+                                          "comma-separated row ids (default: all; "
+                                          "see --list)",
+                                          false, "all", "IDS", cmd);
+        TCLAP::SwitchArg list("", "list", "list the rows and exit", cmd);
+        TCLAP::ValueArg<unsigned> seeds(
+            "", "seeds", "seeds per row (default 5, --quick 1)", false, 0, "N", cmd);
+        TCLAP::ValueArg<uint64_t> firstSeed(
+            "", "first-seed", "seeds are S, S+1, ... (default 1)", false, 1, "S", cmd);
+        TCLAP::SwitchArg quick("", "quick",
+                               "tiny runs: first sub-run, sweep end points, "
+                               "40 s of simulated time",
+                               cmd);
+        TCLAP::ValueArg<std::string> out(
+            "", "out", "output folder (required unless --list)", false, "", "DIR", cmd);
+        TCLAP::ValueArg<std::string> cfgDir(
+            "", "config-dir",
+            "folder of the sim_*.ini and "
+            "slam_*.ini (default: the installed stock INIs)",
+            false, exeDir() + "/../share/rfir/config_ini", "DIR", cmd);
+        TCLAP::ValueArg<std::string> notes("", "notes", "markdown inserted in results.md",
+                                           false, "", "FILE", cmd);
+        TCLAP::SwitchArg noFig("", "no-figures", "do not draw the PNG figures", cmd);
+        if (!cmd.parse(argc, argv)) return 0;
+
+        const auto selected = selectRows(rows.getValue(), quick.getValue());
+        if (list.getValue()) {
+            for (const auto& r : allRows(false))
+                std::cout << r.id << "\t" << r.source << ": " << r.title << "\n";
+            return 0;
+        }
+        if (out.getValue().empty()) throw std::invalid_argument("--out DIR is required");
+        const unsigned n = seeds.isSet() ? seeds.getValue() : quick.getValue() ? 1 : 5;
+        if (n == 0) throw std::invalid_argument("--seeds must be at least 1");
+        TMeta meta;
+        meta.quick = quick.getValue();
+        for (unsigned i = 0; i < n; i++) meta.seeds.push_back(firstSeed.getValue() + i);
+        for (int i = 0; i < argc; i++)
+            meta.commandLine +=
+                (i ? " " + std::string(argv[i]) : mrpt::system::extractFileName(argv[0]));
+        // Fail before hours of work, not after.
+        std::error_code ec;
+        std::filesystem::create_directories(out.getValue() + "/img", ec);
+        if (ec || !mrpt::system::directoryExists(out.getValue() + "/img"))
+            throw std::runtime_error("cannot create the folder '" + out.getValue() +
+                                     "/img'");
+        const auto t0 = Clock::now();
+        std::vector<TRowResults> results;
+        for (size_t i = 0; i < selected.size(); i++)
+            results.push_back(
+                runRow(selected[i], meta.seeds, cfgDir.getValue(), i, selected.size()));
+        meta.wallSeconds = since(t0);
+        writeOutputs(out.getValue(), results, meta, notes.getValue(), !noFig.getValue());
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "rfir-experiments: error: " << e.what() << "\n";
+        return 1;
+    }
+}

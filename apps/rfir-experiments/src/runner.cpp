@@ -1,0 +1,149 @@
+/* rfir-experiments: simulate, run a method, score it. */
+#include "runner.h"
+
+#include <rfir/eval/metrics.h>
+#include <rfir/slam/slam_engine.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/random/RandomGenerators.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace rfir::experiments {
+namespace {
+using rfir::common::TMapEntry;
+
+std::string readText(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("cannot read '" + path + "'");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+/** "section.key=value" into an in-memory copy of the INI (never the file). */
+void applyEdit(mrpt::config::CConfigFileMemory& ini, const std::string& edit) {
+    const auto dot = edit.find('.'), eq = edit.find('=');
+    if (dot == std::string::npos || eq == std::string::npos || dot > eq)
+        throw std::invalid_argument("bad INI edit '" + edit + "' (section.key=value)");
+    ini.write(edit.substr(0, dot), edit.substr(dot + 1, eq - dot - 1),
+              edit.substr(eq + 1));
+}
+
+rfir::slam::TSlamConfig slamConfig(const std::string& dir, const TMethodSpec& m,
+                                   const TPoint& p) {
+    const std::string file = m.method == "fastslam" ? "fastslam"
+                             : m.method == "ps"     ? "ps"
+                                                    : "pf";
+    mrpt::config::CConfigFileMemory ini(readText(dir + "/slam_" + file + ".ini"));
+    for (const auto& e : p.slamEdits) applyEdit(ini, e);
+    for (const auto& e : m.edits) applyEdit(ini, e);
+    return rfir::slam::loadSlamConfig(ini, m.method);
+}
+
+/** The simulator's steps as the engines' inputs: odometry increments between
+ * consecutive absolute odometry poses, and the RFID / range-bearing readings. */
+std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out) {
+    std::vector<rfir::slam::TSlamInput> v;
+    std::optional<mrpt::poses::CPose2D> last;
+    for (const auto& s : out.steps) {
+        rfir::slam::TSlamInput in;
+        in.t = s.t;
+        if (s.odometry) {
+            if (last) in.odometryIncrement = *s.odometry - *last;
+            last = s.odometry;
+        }
+        for (const auto& o : s.obs) {
+            if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
+                in.rfid = r;
+            if (auto b =
+                    std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
+                in.rb = b;
+        }
+        v.push_back(std::move(in));
+    }
+    return v;
+}
+
+TMapEntry::Kind mapKind(const rfir::sim::TSimOutput& sim) {
+    return sim.header.readers.empty() && sim.header.rbSensor ? TMapEntry::Kind::Landmark
+                                                             : TMapEntry::Kind::Tag;
+}
+
+/** Error before the kidnapping, after it, and the time to get back below 0.1 m. */
+void kidnapMetrics(const rfir::sim::TSimConfig& cfg, TRunResult& r) {
+    const double t0 = cfg.kidnap.time, tDown = t0 + cfg.kidnap.carryTime;
+    const auto& pp = r.eval.robot->perPose;
+    double sb = 0, sa = 0;
+    size_t nb = 0, na = 0;
+    std::optional<double> lastBad;
+    for (const auto& e : pp) {
+        if (e.t < t0) sb += e.dist, nb++;
+        if (e.t > tDown + 15) sa += e.dist, na++;
+        if (e.t >= tDown && e.dist >= 0.1) lastBad = e.t;
+    }
+    if (nb) r.beforeKidnap = sb / double(nb);
+    if (na) r.afterKidnap = sa / double(na);
+    if (!lastBad)
+        r.recoveryTime = 0;
+    else if (!pp.empty() && *lastBad < pp.back().t)
+        r.recoveryTime = *lastBad - tDown;
+}
+}  // namespace
+
+TDataSet simulateDataSet(const std::string& configDir, const TSubRun& run,
+                         const TPoint& point, uint64_t seed) {
+    std::vector<std::string> ov = run.simOverrides;
+    ov.insert(ov.end(), point.simOverrides.begin(), point.simOverrides.end());
+    TDataSet d;
+    d.cfg = rfir::sim::loadSimConfig(configDir + "/" + run.simIni, ov);
+    d.sim = rfir::sim::simulate(d.cfg, seed);
+    if (!d.sim.header.readers.empty())
+        d.passed = rfir::eval::tagsPassedOver(d.sim.gtMap, d.sim.groundTruth,
+                                              d.sim.header.readers);
+    else if (d.sim.header.rbSensor)
+        d.passed = rfir::eval::landmarksInView(d.sim.gtMap, d.sim.groundTruth,
+                                               *d.sim.header.rbSensor);
+    return d;
+}
+
+TRunResult runMethod(const std::string& configDir, const TDataSet& data,
+                     const TMethodSpec& m, const TPoint& point, uint64_t seed,
+                     bool keepOutputs) {
+    auto cfg = slamConfig(configDir, m, point);
+    cfg.seed = seed;
+    // MRPT's particle filter draws from the global generator.
+    mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
+    auto engine = rfir::slam::makeEngine(cfg, data.sim.header);
+    const auto run = rfir::slam::runEngine(*engine, data.sim.groundTruth.front().pose,
+                                           toInputs(data.sim));
+    TRunResult r;
+    r.method = m.label;
+    r.seed = seed;
+    r.msPerStep = 1e3 * run.meanStepTime;
+    r.maxStepMs = 1e3 * run.maxStepTime;
+    r.totalSeconds = run.totalTime;
+    r.steps = run.path.size();
+    r.resets = run.resets;
+    rfir::common::TPath2D est;
+    for (const auto& [t, p] : run.path) est.push_back({t, p});
+    rfir::common::TMapFile map;
+    for (const auto& l : run.map)
+        map.push_back({l.isTag ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark, l.id,
+                       l.x, l.y, 0, l.sx, l.sy, 0});
+    r.eval.label = m.label;
+    r.eval.robot = rfir::eval::computeRobotErrors(est, data.sim.groundTruth);
+    r.eval.map = rfir::eval::computeMapErrors(map, data.sim.gtMap, mapKind(data.sim));
+    if (data.passed) rfir::eval::setPassedOver(*r.eval.map, *data.passed, map);
+    if (data.cfg.kidnap.enabled) kidnapMetrics(data.cfg, r);
+    if (keepOutputs) {
+        r.estPath = std::move(est);
+        r.estMap = std::move(map);
+    } else
+        r.eval.robot->perPose.clear(), r.eval.map->perLandmark.clear();
+    return r;
+}
+
+}  // namespace rfir::experiments

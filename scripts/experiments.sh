@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Runs the experiments of the seeds' tables and figures (rfir-experiments):
+# PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on the same simulated data,
+# several seeds per row; writes docs/results.md, docs/results.json and
+# docs/img/exp_*.png. Builds rfir-experiments first if needed.
+#
+#   bash scripts/experiments.sh                      # every row, 5 seeds
+#   bash scripts/experiments.sh --quick --out /tmp/x # tiny runs (a minute)
+#   bash scripts/experiments.sh --rows t41,t42 --seeds 3 --out /tmp/y
+#   bash scripts/experiments.sh --list               # the row ids
+# Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${RFIR_BUILD_DIR:-build}
+JOBS=${RFIR_JOBS:-$(nproc)}
+
+if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+  cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$BUILD" -j"$JOBS" --target rfir-experiments
+
+args=("$@")
+has_out=0
+for a in "${args[@]}"; do [ "$a" = "--out" ] && has_out=1; done
+[ $has_out -eq 1 ] || args+=(--out docs)
+# The source tree's INIs (the build's copy is refreshed only at configure time).
+exec "$BUILD/bin/rfir-experiments" --config-dir config_ini \
+  --notes apps/rfir-experiments/notes.md "${args[@]}"

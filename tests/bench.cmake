@@ -1,0 +1,7 @@
+# rfir-bench: a smoke run in a tiny configuration; checks that the table, the
+# JSON and the plots are complete and that bad options are rejected. No timing
+# assertions.
+if(TARGET rfir-bench)
+  rfir_add_test(test_bench_smoke SOURCES test_bench_smoke.cpp LIBS)
+  add_dependencies(test_bench_smoke rfir-bench)
+endif()

@@ -6,6 +6,11 @@ if(TARGET rfir_sim)
   rfir_add_test(test_slam_accuracy
     SOURCES test_slam_accuracy.cpp
     LIBS rfir_slam rfir_sim rfir_eval)
+  # End to end through the program (built by the same build).
+  rfir_add_test(test_slam_app
+    SOURCES test_slam_app.cpp
+    LIBS rfir_sim)
+  add_dependencies(test_slam_app rfir-slam)
 endif()
 if(TARGET rfir_sim)
   # The experiments of docs/slam.md: DISABLED_ tests, run by hand.

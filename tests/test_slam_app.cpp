@@ -1,0 +1,104 @@
+/* rfir-slam end to end: a short simulated rawlog through the program, every
+ * output written, ground truth found beside the rawlog; bad settings refused
+ * with the INI key named. */
+#include <rfir/sim/simulator.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/system/filesystem.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+const std::string kExe = std::string(RFIR_BINARY_DIR) + "/bin/rfir-slam";
+
+struct TRun
+{
+    int code;
+    std::string out;
+};
+TRun run(const std::string& args)
+{
+    const std::string cmd = kExe + " " + args + " 2>&1";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+    const int st = p ? ::pclose(p) : -1;
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+std::string slurp(const std::string& f)
+{
+    std::ifstream in(f);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+std::string dataDir()
+{
+    static std::string dir;
+    if (!dir.empty()) return dir;
+    dir = mrpt::system::getTempFileName() + "_slamapp";
+    mrpt::system::createDirectory(dir);
+    auto cfg = rfir::sim::TSimConfig();
+    cfg.maxDuration = 30;
+    rfir::sim::writeOutputs(rfir::sim::simulate(cfg, 2), dir, "run");
+    return dir;
+}
+}  // namespace
+
+TEST(SlamApp, WritesEveryOutput)
+{
+    ASSERT_TRUE(mrpt::system::fileExists(kExe)) << kExe;
+    const std::string d = dataDir(), out = d + "/out_pf";
+    const auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + out + " --seed 3");
+    ASSERT_EQ(r.code, 0) << r.out;
+    for (const char* f : {"path.tum", "map.txt", "settings.ini", "stats.json",
+                          "path_map.png", "errors.json"})
+        EXPECT_TRUE(mrpt::system::fileExists(out + "/" + f)) << f;
+    EXPECT_NE(r.out.find("Robot localization"), std::string::npos) << r.out;
+    EXPECT_NE(slurp(out + "/stats.json").find("\"steps\": 301"), std::string::npos);
+    EXPECT_NE(slurp(out + "/settings.ini").find("robot_update"), std::string::npos);
+    EXPECT_EQ(slurp(out + "/map.txt").find("tag "), slurp(out + "/map.txt").find("tag "));
+    // The effective settings reproduce the run exactly.
+    const std::string out2 = d + "/out_again";
+    const auto r2 = run("--rawlog " + d + "/run.rawlog --out-dir " + out2 +
+                        " --seed 3 --config " + out + "/settings.ini");
+    ASSERT_EQ(r2.code, 0) << r2.out;
+    EXPECT_EQ(slurp(out + "/path.tum"), slurp(out2 + "/path.tum"));
+}
+
+TEST(SlamApp, EveryMethodWithItsStockIni)
+{
+    const std::string d = dataDir();
+    for (const char* m : {"ps", "fastslam", "odometry"})
+    {
+        const auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + d + "/out_" + m +
+                           " --method " + m + " --start 0.5 0.5 0");
+        EXPECT_EQ(r.code, 0) << m << ": " << r.out;
+        EXPECT_NE(slurp(d + "/out_" + m + "/stats.json").find(m), std::string::npos);
+    }
+}
+
+TEST(SlamApp, BadSettingsAreRefused)
+{
+    const std::string d = dataDir(), ini = d + "/bad.ini";
+    std::string text = slurp(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_pf.ini");
+    text.replace(text.find("robot_particles = 500"), 21, "robot_particles = 0");
+    std::ofstream(ini) << text;
+    auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + d + "/o1 --config " + ini);
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.out.find("robot_particles"), std::string::npos) << r.out;
+    r = run("--rawlog " + d + "/run.rawlog --out-dir " + d + "/o2 --method slam9");
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.out.find("method"), std::string::npos) << r.out;
+    r = run("--rawlog " + d + "/missing.rawlog --out-dir " + d + "/o3");
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.out.find("missing.rawlog"), std::string::npos) << r.out;
+    r = run("--rawlog " + d + "/run.rawlog --out-dir " + d + "/o4 --start 1 2");
+    EXPECT_NE(r.code, 0);
+    EXPECT_FALSE(mrpt::system::directoryExists(d + "/o1"));
+}

@@ -90,3 +90,14 @@ TEST(IRModel, DistancesForVoltage) {
         for (double r : distancesForVoltage(c, v, 1.2))
             EXPECT_NEAR(c.expected(r, 1.2), v, 1e-9);
 }
+
+// Inverse-square height model: V(d, h) = (h0/h)^2 V(d), same visible radius.
+TEST(IRModel, InverseSquareHeightModel) {
+    TVoltageCurve c;
+    c.heightModel = TVoltageCurve::HeightModel::InverseSquare;
+    EXPECT_NEAR(c.expected(0.1, 1.0), 1.44 * 1.77847, 1e-9);
+    EXPECT_EQ(c.visibleRadius(1.0), 0.28);
+    auto d = distancesForVoltage(c, 1.44 * 1.08297, 1.0);
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NEAR(d[0], 0.2, 1e-6);
+}

@@ -14,7 +14,7 @@ MAP_DEFINITION_REGISTER("rfir::maps::CIREmitterMap,irEmitterMap",
                         rfir::maps::CIREmitterMap)
 
 namespace {
-const std::vector<std::string> kHeightModels = {"fixed", "angular"};
+const std::vector<std::string> kHeightModels = {"fixed", "inverse_square", "angular"};
 const std::vector<std::string> kAssociations = {"estimate", "particle"};
 }  // namespace
 

@@ -13,11 +13,10 @@ double TVoltageCurve::visibleRadius(double h) const {
 
 double TVoltageCurve::expected(double d, double h) const {
     double scale = 1.0, dd = d;
-    if (heightModel == HeightModel::Angular && h > 0) {
-        // Same angle off the LED axis: d / h = d0 / h0.
-        dd = d * fitHeight / h;
+    if (heightModel != HeightModel::Fixed && h > 0)
         scale = (fitHeight / h) * (fitHeight / h);
-    }
+    // Same angle off the LED axis: d / h = d0 / h0.
+    if (heightModel == HeightModel::Angular && h > 0) dd = d * fitHeight / h;
     if (dd > maxDistance) return 0.0;
     return std::max(0.0, scale * (c2 * dd * dd + c1 * dd + c0));
 }
@@ -70,10 +69,10 @@ double readingLogLikelihood(double v, const mrpt::math::TPoint2D& rcv, const TEm
 std::vector<double> distancesForVoltage(const TVoltageCurve& c, double v, double h) {
     // Solve in the fitted frame: (h0/h)^2 curve(d0) = v, d = d0 h / h0.
     double scale = 1.0, back = 1.0;
-    if (c.heightModel == TVoltageCurve::HeightModel::Angular && h > 0) {
+    if (c.heightModel != TVoltageCurve::HeightModel::Fixed && h > 0)
         scale = (c.fitHeight / h) * (c.fitHeight / h);
+    if (c.heightModel == TVoltageCurve::HeightModel::Angular && h > 0)
         back = h / c.fitHeight;
-    }
     const double a = c.c2, b = c.c1, k = c.c0 - v / scale;
     std::vector<double> out;
     auto keep = [&](double d0) {

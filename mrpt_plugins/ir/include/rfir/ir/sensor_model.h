@@ -25,6 +25,9 @@ struct TVoltageCurve {
     enum class HeightModel {
         /** The curve as fitted, whatever the actual height (the seed). */
         Fixed,
+        /** The fitted profile scaled by the inverse square of the height:
+         * V(d, h) = (h0/h)^2 V(d). */
+        InverseSquare,
         /** Same off-axis angle gives the same beam intensity, scaled by the
          * inverse square of the distance: V(d, h) = (h0/h)^2 V(d h0 / h). */
         Angular

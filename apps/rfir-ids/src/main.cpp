@@ -1,0 +1,153 @@
+/* rfir-ids: IR emitter IDs (thesis 5.1, 5.3).
+ *   rfir-ids encode --codes 3,9           -> 39
+ *   rfir-ids decode --id 39               -> codes, frequencies, type
+ *   rfir-ids count [--frequencies 30 --max-codes 6]   -> 768211
+ *   rfir-ids plan --room "0 0 3.2 2.4" [--pitch 0.8] [--out emitters.txt]
+ *   rfir-ids memory --grid "600 400" [--repeated-ids 9]  -> thesis 5.3 sizes */
+#include <rfir/common/map_io.h>
+#include <rfir/ir/id_planner.h>
+#include <rfir/obs/ir_codes.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+
+#include <iostream>
+#include <sstream>
+
+using namespace rfir::ir;
+
+namespace {
+struct TArgs {
+    TCLAP::CmdLine cmd{"rfir-ids: IR emitter ID scheme and emitter layout planner", ' ',
+                       "0.1"};
+    TCLAP::UnlabeledValueArg<std::string> command{
+        "command", "encode | decode | count | plan | memory", true, "", "command", cmd};
+    TCLAP::ValueArg<std::string> codes{
+        "", "codes", "encode: codes, e.g. 3,9", false, "", "LIST", cmd};
+    TCLAP::ValueArg<std::string> id{"",   "id", "decode: emitter ID, e.g. 39", false, "",
+                                    "ID", cmd};
+    TCLAP::ValueArg<int> freqs{
+        "", "frequencies", "count: number of frequencies", false, kNumCodes, "N", cmd};
+    TCLAP::ValueArg<int> maxCodes{
+        "",    "max-codes", "count: most codes per ID (microcontroller pins)",
+        false, kNumCodes,   "K",
+        cmd};
+    TCLAP::ValueArg<std::string> room{
+        "", "room", "plan: \"min_x min_y max_x max_y\" (m)", false, "", "BOX", cmd};
+    TCLAP::ValueArg<double> pitch{
+        "", "pitch", "plan: same-type emitter spacing (m)", false, 0.8, "M", cmd};
+    TCLAP::ValueArg<double> height{
+        "", "height", "plan: emitter height above floor (m)", false, 1.5, "M", cmd};
+    TCLAP::ValueArg<std::string> repCodes{
+        "", "repeated-codes", "plan: codes of the repeated IDs", false, "1,2,3,4", "LIST",
+        cmd};
+    TCLAP::ValueArg<int> uniqueCodes{
+        "", "unique-codes", "plan: codes per unique ID (2-9)", false, 2, "K", cmd};
+    TCLAP::SwitchArg allUnique{
+        "", "all-unique", "plan: the same positions, every emitter a unique ID", cmd};
+    TCLAP::ValueArg<std::string> out{
+        "", "out", "plan: emitter file to write", false, "", "FILE", cmd};
+    TCLAP::ValueArg<std::string> grid{
+        "", "grid", "memory: \"L W\" repeated grid lines", false, "", "L W", cmd};
+    TCLAP::ValueArg<int> repIds{
+        "", "repeated-ids", "memory: repeated IDs used", false, 9, "N", cmd};
+};
+
+std::vector<double> numbers(const std::string& s, size_t n, const char* what) {
+    std::istringstream in(s);
+    std::vector<double> v;
+    for (double x; in >> x;) v.push_back(x);
+    if (v.size() != n || !in.eof())
+        throw std::runtime_error(std::string(what) + ": expected " + std::to_string(n) +
+                                 " numbers, got '" + s + "'");
+    return v;
+}
+
+int cmdEncode(TArgs& a) {
+    const auto c = parseCodeList(a.codes.getValue());
+    if (!c)
+        throw std::runtime_error("--codes: '" + a.codes.getValue() +
+                                 "' is not an ascending list of codes 1..9 (e.g. 3,9)");
+    std::cout << emitterIdFromCodes(*c) << "\n";
+    return 0;
+}
+
+int cmdDecode(TArgs& a) {
+    const auto c = codesFromEmitterId(a.id.getValue());
+    if (!c)
+        throw std::runtime_error("--id: '" + a.id.getValue() +
+                                 "' is not an emitter ID (ascending digits 1..9)");
+    std::cout << "id " << a.id.getValue() << "\ncodes " << formatCodeList(*c)
+              << "\nfrequencies_hz";
+    for (auto k : *c) std::cout << " " << codeFrequencyHz(k);
+    std::cout << "\ntype " << (isRepeatedId(*c) ? "repeated" : "unique") << "\n";
+    return 0;
+}
+
+int cmdPlan(TArgs& a) {
+    if (!a.room.isSet()) throw std::runtime_error("plan: --room is required");
+    const auto b = numbers(a.room.getValue(), 4, "--room");
+    TRoom room{b[0], b[1], b[2], b[3]};
+    TLatticeParams p;
+    p.pitch = a.pitch.getValue();
+    p.height = a.height.getValue();
+    const auto rc = parseCodeList(a.repCodes.getValue());
+    if (!rc) throw std::runtime_error("--repeated-codes: not an ascending list of 1..9");
+    p.repeatedCodes = *rc;
+    p.uniqueCodesPerId = a.uniqueCodes.getValue();
+    p.allUnique = a.allUnique.getValue();
+    const auto r = planLattice(room, p);
+    std::cout << formatPlanReport(r);
+    if (a.out.isSet()) {
+        rfir::common::TMapFile f;
+        for (const auto& e : r.emitters) {
+            rfir::common::TMapEntry m;
+            m.kind = rfir::common::TMapEntry::Kind::Emitter;
+            m.id = e.id;
+            m.x = e.x;
+            m.y = e.y;
+            m.z = e.z;
+            f.push_back(m);
+        }
+        rfir::common::saveMapFile(a.out.getValue(), f,
+                                  "rfir-ids plan --room \"" + a.room.getValue() +
+                                      "\" --pitch " + std::to_string(p.pitch));
+        std::cout << "wrote " << a.out.getValue() << "\n";
+    }
+    return 0;
+}
+
+int cmdMemory(TArgs& a) {
+    const auto g = numbers(a.grid.getValue(), 2, "--grid");
+    if (g[0] < 2 || g[1] < 2) throw std::runtime_error("--grid: L and W must be >= 2");
+    const auto L = uint64_t(g[0]), W = uint64_t(g[1]);
+    std::cout << "mixed layout records:       "
+              << mixedLayoutRecords(L, W, uint64_t(a.repIds.getValue()))
+              << "\nunique-only layout records: " << uniqueOnlyLayoutRecords(L, W)
+              << "\n";
+    return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    TArgs a;
+    try {
+        a.cmd.parse(argc, argv);
+        const std::string c = a.command.getValue();
+        if (c == "encode") return cmdEncode(a);
+        if (c == "decode") return cmdDecode(a);
+        if (c == "count") {
+            std::cout << countIds(a.freqs.getValue(), a.maxCodes.getValue()) << "\n";
+            return 0;
+        }
+        if (c == "plan") return cmdPlan(a);
+        if (c == "memory") return cmdMemory(a);
+        throw std::runtime_error("unknown command '" + c +
+                                 "' (encode, decode, count, plan, memory)");
+    } catch (const TCLAP::ArgException& e) {
+        std::cerr << "rfir-ids: " << e.error() << " (" << e.argId() << ")\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "rfir-ids: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,117 @@
+/* rfir-localize: configuration. */
+#include "localize_config.h"
+
+#include <rfir/ir/ini_util.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/maps/TMetricMapInitializer.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace rfir::localize {
+namespace {
+const std::string kMapPrefix = "MetricMap_irEmitterMap_00";
+
+void checkSections(const mrpt::config::CConfigFileBase& c, const std::string& file) {
+    const std::vector<std::string> allowed = {"localization",
+                                              "motion",
+                                              "MetricMap",
+                                              kMapPrefix + "_creationOpts",
+                                              kMapPrefix + "_insertOpts",
+                                              kMapPrefix + "_likelihoodOpts"};
+    std::vector<std::string> sections;
+    c.getAllSections(sections);
+    for (const auto& s : sections) {
+        bool ok = false;
+        for (const auto& a : allowed) ok = ok || a == s;
+        if (!ok)
+            throw std::runtime_error(file + ": unknown INI section [" + s +
+                                     "] (allowed: localization, motion, MetricMap, " +
+                                     kMapPrefix + "_creationOpts, _insertOpts, " +
+                                     "_likelihoodOpts)");
+    }
+    rfir::ir::ini::checkKeys(c, "MetricMap", {"irEmitterMap_count"});
+    if (c.read_int("MetricMap", "irEmitterMap_count", 1) != 1)
+        throw std::runtime_error(file +
+                                 ": INI section [MetricMap], key 'irEmitterMap_count': "
+                                 "must be 1");
+    rfir::ir::ini::checkKeys(c, kMapPrefix + "_insertOpts",
+                             {"enableSaveAs3DObject", "enableObservationLikelihood",
+                              "enableObservationInsertion"});
+}
+}  // namespace
+
+std::string stockIniPath() {
+    char buf[4096];
+    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+    if (n <= 0)
+        throw std::runtime_error("cannot find the program's folder (/proc/self/exe)");
+    buf[n] = 0;
+    const auto dir = std::filesystem::path(buf).parent_path();
+    return (dir / ".." / "share" / "rfir" / "config_ini" / "ir_localize.ini")
+        .lexically_normal()
+        .string();
+}
+
+void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
+    if (!std::filesystem::is_regular_file(cfg.iniPath))
+        throw std::runtime_error(cfg.iniPath + ": INI file not found");
+    // A memory copy: CConfigFile would write our additions back to the file.
+    mrpt::config::CConfigFileMemory c;
+    {
+        std::ifstream f(cfg.iniPath);
+        std::stringstream ss;
+        ss << f.rdbuf();
+        c.setContent(ss.str());
+    }
+    try {
+        checkSections(c, cfg.iniPath);
+        cfg.params.loadFromConfigFile(c, "");
+        // The map as MRPT builds its own: initializers, then a multi-map. Set
+        // the count to 1 when the section omits it.
+        if (!c.keyExists("MetricMap", "irEmitterMap_count"))
+            c.write("MetricMap", "irEmitterMap_count", 1);
+        // --emitters wins; a relative emitter_file is relative to the INI.
+        const std::string sec = kMapPrefix + "_creationOpts";
+        std::string ef = rfir::ir::ini::readString(c, sec, "emitter_file", "");
+        if (!emitterOverride.empty())
+            ef = std::filesystem::absolute(emitterOverride).string();
+        else if (!ef.empty() && std::filesystem::path(ef).is_relative())
+            ef = (std::filesystem::path(cfg.iniPath).parent_path() / ef).string();
+        if (!ef.empty()) c.write(sec, "emitter_file", ef);
+        mrpt::maps::TSetOfMetricMapInitializers inits;
+        inits.loadFromConfigFile(c, "MetricMap");
+        mrpt::maps::CMultiMetricMap mm;
+        mm.setListOfMaps(inits);
+        cfg.map = mm.mapByClass<rfir::maps::CIREmitterMap>();
+        cfg.emitterPath = ef;
+    } catch (const std::exception& e) {
+        throw std::runtime_error(cfg.iniPath + ": " + mrpt::exception_to_str(e));
+    }
+    if (!cfg.map) throw std::runtime_error(cfg.iniPath + ": no irEmitterMap was created");
+    if (cfg.emitterPath.empty())
+        throw std::runtime_error(
+            "no emitter file: give --emitters FILE or set emitter_file in [" +
+            kMapPrefix + "_creationOpts] of " + cfg.iniPath);
+}
+
+std::string settingsIni(const TConfig& cfg, const std::string& commandLine) {
+    std::ostringstream o;
+    o << "# rfir-localize effective settings; rerun with --config this_file\n"
+      << "# " << commandLine << "\n"
+      << "# rawlog = " << cfg.rawlogPath << "\n# seed = " << cfg.seed
+      << "\n# mode = " << (cfg.odometryOnly ? "odometry-only" : "monte-carlo") << "\n\n";
+    cfg.params.dumpToTextStream(o);
+    o << "\n[MetricMap]\nirEmitterMap_count = 1\n\n[" << kMapPrefix
+      << "_creationOpts]\nemitter_file = " << cfg.emitterPath << "\n\n[" << kMapPrefix
+      << "_likelihoodOpts]\n";
+    cfg.map->likelihoodOptions.dumpToTextStream(o);
+    return o.str();
+}
+
+}  // namespace rfir::localize

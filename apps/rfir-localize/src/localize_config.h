@@ -1,0 +1,36 @@
+/* rfir-localize: the run's configuration (INI + command line). */
+#pragma once
+
+#include <rfir/ir/ir_localizer.h>
+#include <rfir/maps/CIREmitterMap.h>
+
+#include <memory>
+#include <string>
+
+namespace rfir::localize {
+struct TConfig {
+    std::string iniPath;  //!< the INI read (stock or --config)
+    std::string rawlogPath;
+    std::string emitterPath;  //!< --emitters, else the INI's emitter_file
+    std::string outDir;
+    uint64_t seed = 1;
+    bool odometryOnly = false;
+    bool quiet = false;
+    rfir::ir::TLocalizerParams params;
+    std::shared_ptr<rfir::maps::CIREmitterMap> map;
+};
+
+/** <exe_dir>/../share/rfir/config_ini/ir_localize.ini */
+std::string stockIniPath();
+
+/** Reads the INI: sections [localization], [motion], [MetricMap] and the
+ * emitter map's sections, created through MRPT's map factory
+ * (TSetOfMetricMapInitializers + CMultiMetricMap). Unknown sections and keys
+ * are errors naming them. `emitterOverride` (non-empty) replaces
+ * emitter_file. Fills cfg.params, cfg.map, cfg.emitterPath. */
+void loadConfig(TConfig& cfg, const std::string& emitterOverride);
+
+/** The effective configuration as an INI (settings.ini). */
+std::string settingsIni(const TConfig& cfg, const std::string& commandLine);
+
+}  // namespace rfir::localize

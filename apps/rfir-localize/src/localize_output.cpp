@@ -1,0 +1,147 @@
+/* rfir-localize: the output files. */
+#include "localize_output.h"
+
+#include <rfir/common/atomic_file.h>
+#include <rfir/common/map_io.h>
+#include <rfir/eval/metrics.h>
+#include <rfir/eval/plot.h>
+#include <rfir/eval/report.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace rfir::localize {
+namespace fs = std::filesystem;
+using rfir::common::TPath2D;
+
+std::string rawlogStem(const std::string& p) {
+    const std::string ext = ".rawlog";
+    if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
+        return p.substr(0, p.size() - ext.size());
+    return p;
+}
+
+namespace {
+/** The path's pose at each spot time (the latest pose not after it). */
+TPath2D atSpots(const TPath2D& path, const TPath2D& spots) {
+    TPath2D out;
+    size_t k = 0;
+    for (const auto& s : spots) {
+        while (k < path.size() && path[k].t <= s.t + 1e-6) k++;
+        if (k > 0) out.push_back({s.t, path[k - 1].pose});
+    }
+    return out;
+}
+
+struct TEvals {
+    std::vector<rfir::eval::TEvalResult> rows;
+    std::optional<TPath2D> gt;
+    std::optional<TPath2D> odoAligned;
+};
+
+TEvals evaluate(const TConfig& cfg, const TRunResult& res) {
+    TEvals ev;
+    const std::string stem = rawlogStem(cfg.rawlogPath);
+    if (!fs::exists(stem + ".gt.tum")) return ev;
+    ev.gt = rfir::common::loadTUM(stem + ".gt.tum");
+    const std::string label = cfg.odometryOnly ? "odometry only" : "IR MCL";
+    rfir::eval::TEvalResult traj;
+    traj.label = label + " (path)";
+    if (!res.path.empty()) traj.robot = rfir::eval::computeRobotErrors(res.path, *ev.gt);
+    ev.odoAligned = rfir::eval::alignOdometryAtStart(res.odometry, *ev.gt);
+    if (!cfg.odometryOnly)
+        traj.odometry = rfir::eval::computeRobotErrors(*ev.odoAligned, *ev.gt);
+    ev.rows.push_back(traj);
+    if (fs::exists(stem + ".spots.tum")) {
+        const auto spots = rfir::common::loadTUM(stem + ".spots.tum");
+        rfir::eval::TEvalResult sp;
+        sp.label = label + " (spots)";
+        const auto est = atSpots(res.path, spots);
+        if (!est.empty()) sp.robot = rfir::eval::computeRobotErrors(est, spots);
+        if (!cfg.odometryOnly)
+            sp.odometry =
+                rfir::eval::computeRobotErrors(atSpots(*ev.odoAligned, spots), spots);
+        ev.rows.push_back(sp);
+    }
+    return ev;
+}
+
+std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& ev) {
+    std::ostringstream o;
+    o << std::setprecision(10) << "{\n"
+      << "  \"rawlog\": \"" << cfg.rawlogPath << "\",\n"
+      << "  \"emitters\": \"" << cfg.emitterPath << "\",\n"
+      << "  \"mode\": \"" << (cfg.odometryOnly ? "odometry-only" : "monte-carlo")
+      << "\",\n"
+      << "  \"seed\": " << cfg.seed << ",\n"
+      << "  \"num_particles\": " << cfg.params.numParticles << ",\n"
+      << "  \"association\": \""
+      << (cfg.map->likelihoodOptions.association ==
+                  rfir::maps::CIREmitterMap::TAssociation::Estimate
+              ? "estimate"
+              : "particle")
+      << "\",\n"
+      << "  \"instants\": " << res.steps << ",\n"
+      << "  \"ir_observations\": " << res.irObservations << ",\n"
+      << "  \"readings\": " << res.readings << ",\n"
+      << "  \"readings_used\": " << res.used << ",\n"
+      << "  \"unknown_ids\": " << res.unknownIds << ",\n"
+      << "  \"raw_windows_decoded\": " << res.decoded << ",\n"
+      << "  \"first_unique_time\": "
+      << (res.firstUniqueTime ? std::to_string(*res.firstUniqueTime) : "null") << ",\n"
+      << "  \"poses\": " << res.path.size() << ",\n"
+      << "  \"reset_events\": " << res.resetEvents << ",\n"
+      << "  \"reset_particles\": " << res.resetParticles << ",\n"
+      << "  \"odometry_start\": \"" << res.odometryStart << "\",\n"
+      << "  \"filter_seconds\": " << res.seconds;
+    for (size_t i = 0; i < ev.rows.size(); i++)
+        o << ",\n  \"" << (i == 0 ? "path_errors" : "spot_errors")
+          << "\": " << rfir::eval::toJson(ev.rows[i]);
+    o << "\n}\n";
+    return o.str();
+}
+
+void plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
+          const std::string& png) {
+    rfir::eval::TMapFigure fig;
+    fig.title =
+        std::string(cfg.odometryOnly ? "Odometry only" : "IR Monte Carlo localization") +
+        ": " + fs::path(cfg.rawlogPath).filename().string();
+    fig.gtPath = ev.gt;
+    if (!res.path.empty()) fig.estPath = res.path;
+    if (!cfg.odometryOnly) fig.odomPath = ev.odoAligned ? *ev.odoAligned : res.odometry;
+    for (const auto& e : cfg.map->emitters().emitters()) {
+        rfir::common::TMapEntry m;
+        m.kind = rfir::common::TMapEntry::Kind::Emitter;
+        m.id = e.id;
+        m.x = e.x;
+        m.y = e.y;
+        m.z = e.z;
+        fig.gtMap.push_back(m);
+    }
+    rfir::eval::plotMapFigure(png, fig);
+}
+}  // namespace
+
+std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
+                         const std::string& commandLine) {
+    const fs::path out(cfg.outDir);
+    const TEvals ev = evaluate(cfg, res);
+    std::string table;
+    if (!ev.rows.empty()) table = rfir::eval::formatErrorTable(ev.rows);
+    rfir::common::saveTUM((out / "path.tum").string(), res.path);
+    rfir::common::writeFileAtomically(
+        (out / "stats.json").string(),
+        [&](std::ostream& o) { o << statsJson(cfg, res, ev); });
+    rfir::common::writeFileAtomically(
+        (out / "settings.ini").string(),
+        [&](std::ostream& o) { o << settingsIni(cfg, commandLine); });
+    if (!table.empty())
+        rfir::common::writeFileAtomically((out / "errors.txt").string(),
+                                          [&](std::ostream& o) { o << table; });
+    plot(cfg, res, ev, (out / "path.png").string());
+    return table;
+}
+
+}  // namespace rfir::localize

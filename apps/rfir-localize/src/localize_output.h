@@ -1,0 +1,19 @@
+/* rfir-localize: the output files. */
+#pragma once
+
+#include "localize_run.h"
+
+#include <string>
+
+namespace rfir::localize {
+/** Writes OUT/path.tum, stats.json, settings.ini, path.png and, when
+ * `<stem>.gt.tum` lies beside the rawlog, errors.txt (also at the marked spots
+ * of `<stem>.spots.tum` when present). Each file is written whole or not at
+ * all. Returns the error table (empty without ground truth). */
+std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
+                         const std::string& commandLine);
+
+/** `<stem>` of a rawlog path: the path without its ".rawlog" extension. */
+std::string rawlogStem(const std::string& rawlogPath);
+
+}  // namespace rfir::localize

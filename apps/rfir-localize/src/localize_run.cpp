@@ -1,0 +1,63 @@
+/* rfir-localize: one pass over a rawlog. */
+#include "localize_run.h"
+
+#include <rfir/common/rawlog_io.h>
+
+#include <chrono>
+#include <iostream>
+
+namespace rfir::localize {
+TRunResult runLocalization(const TConfig& cfg,
+                           const std::optional<mrpt::poses::CPose2D>& gtStart) {
+    TRunResult res;
+    rfir::common::CRawlogReader reader(cfg.rawlogPath);
+    mrpt::poses::CPose2D odo;
+    res.odometryStart = "origin";
+    if (reader.header().startPose) {
+        odo = *reader.header().startPose;
+        res.odometryStart = "header";
+    } else if (gtStart) {
+        odo = *gtStart;
+        res.odometryStart = "ground truth";
+    }
+    std::unique_ptr<rfir::ir::CIRLocalizer> loc;
+    if (!cfg.odometryOnly)
+        loc = std::make_unique<rfir::ir::CIRLocalizer>(cfg.map, cfg.params, cfg.seed);
+    const auto t0 = std::chrono::steady_clock::now();
+    rfir::common::TRawlogStep st;
+    while (reader.next(st)) {
+        res.steps++;
+        if (st.odometryIncrement) odo = odo + *st.odometryIncrement;
+        res.odometry.push_back({st.t, odo});
+        if (st.ir) res.irObservations++;
+        if (!loc) continue;
+        rfir::ir::TLocalizerStep info;
+        try {
+            info = loc->step(st.odometryIncrement, st.ir.get());
+        } catch (const std::exception& e) {
+            throw std::runtime_error(
+                cfg.rawlogPath + ": instant " + std::to_string(st.index) +
+                " (t = " + std::to_string(st.t) + " s): " + e.what());
+        }
+        res.readings += info.readings;
+        res.used += info.used;
+        res.unknownIds += info.unknownIds;
+        res.decoded += info.decoded;
+        if (info.resetParticles && !info.justStarted) {
+            res.resetEvents++;
+            res.resetParticles += info.resetParticles;
+        }
+        if (info.justStarted) res.firstUniqueTime = st.t;
+        if (info.started) res.path.push_back({st.t, loc->estimate()});
+        if (!cfg.quiet && res.steps % 500 == 0)
+            std::cerr << "rfir-localize: t = " << st.t << " s, " << res.steps
+                      << " instants" << (info.started ? "" : " (waiting for a unique ID)")
+                      << "\n";
+    }
+    res.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (cfg.odometryOnly) res.path = res.odometry;
+    return res;
+}
+
+}  // namespace rfir::localize

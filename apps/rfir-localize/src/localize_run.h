@@ -1,0 +1,29 @@
+/* rfir-localize: one pass over a rawlog. */
+#pragma once
+
+#include "localize_config.h"
+
+#include <rfir/common/trajectory_io.h>
+
+#include <optional>
+#include <string>
+
+namespace rfir::localize {
+struct TRunResult {
+    rfir::common::TPath2D path;  //!< estimate per instant (from the first unique ID)
+    /** Dead reckoning from the start pose (header `start`, else the ground
+     * truth's first pose, else the origin), one pose per instant. */
+    rfir::common::TPath2D odometry;
+    std::string odometryStart;  //!< "header", "ground truth" or "origin"
+    size_t steps = 0, irObservations = 0, readings = 0, used = 0, unknownIds = 0,
+           decoded = 0, resetEvents = 0, resetParticles = 0;
+    std::optional<double> firstUniqueTime;
+    double seconds = 0;  //!< wall-clock time of the filter
+};
+
+/** Runs the filter (or only dead reckoning) over cfg.rawlogPath. `gtStart`:
+ * the ground truth's first pose, if any. Progress on stderr unless quiet. */
+TRunResult runLocalization(const TConfig& cfg,
+                           const std::optional<mrpt::poses::CPose2D>& gtStart);
+
+}  // namespace rfir::localize

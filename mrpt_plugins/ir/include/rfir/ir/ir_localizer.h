@@ -1,0 +1,122 @@
+/* rfir: Monte Carlo localization on the IR emitter map (thesis Algorithm 3)
+ * on MRPT's particle filter: mrpt::bayes::CParticleFilter driving a
+ * mrpt::slam::CMonteCarloLocalization2D whose map is a CIREmitterMap.
+ * Unknown start (particles over the map's area); the estimate (eq. 5.4) is
+ * reported from the first unique-ID reading on. Sensor resetting draws some
+ * particles from a unique-ID reading when too few particles agree with it. */
+#pragma once
+
+#include <rfir/maps/CIREmitterMap.h>
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/slam/CMonteCarloLocalization2D.h>
+
+#include <memory>
+#include <optional>
+
+namespace rfir::ir {
+/** Odometry motion noise (seed eq. 3.6: a Gaussian step in the robot frame),
+ * per step with increment (dx, dy, dphi), d = |(dx, dy)|:
+ *   var_xy  = k_xy^2 d + (scale_sigma d)^2 + min_std_xy^2
+ *   var_phi = k_phi_rot^2 |dphi| + k_phi_xy^2 d + (rot_scale_sigma dphi)^2
+ *             + (heading_drift d)^2 + min_std_phi^2 */
+struct TMotionNoise {
+    double kXY = 0.02, kPhiRot = 0.04, kPhiXY = 0.01;
+    double scaleSigma = 0.02, rotScaleSigma = 0.02, headingDrift = 0.01;
+    double minStdXY = 0.0005, minStdPhi = 0.001;
+    /** Covariance of the increment, robot frame (x, y, phi). */
+    mrpt::math::CMatrixDouble33 covariance(const mrpt::poses::CPose2D& incr) const;
+};
+
+struct TLocalizerParams : public mrpt::config::CLoadableOptions {
+    // [localization]
+    size_t numParticles = 1000;  //!< num_particles (M; the thesis uses 1000)
+    /** init_area "x0 y0 x1 y1": initial particle area; empty: the emitters'
+     * bounding box grown by init_margin. */
+    double initX0 = 0, initY0 = 0, initX1 = 0, initY1 = 0;
+    bool initAreaSet = false;
+    double initMargin = 0.3;  //!< init_margin (m)
+    /** start_from_reading: at the first unique ID, draw every particle from
+     * the reading (false: weigh the uniform prior with it, as the thesis). */
+    bool startFromReading = true;
+    bool sensorResetting = true;       //!< sensor_resetting
+    double resetMinFraction = 0.001;   //!< reset_min_fraction: weight in view below it
+    double resetRatio = 0.5;           //!< reset_ratio: share of particles redrawn
+    double resetDistanceSigma = 0.02;  //!< reset_distance_sigma (m)
+    /** repeated_before_unique: use repeated-ID readings before the first
+     * unique one (association = particle only; the thesis waits). */
+    bool repeatedBeforeUnique = false;
+    double essThreshold = 0.5;  //!< ess_threshold: resample when ESS/M below it
+    mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
+        mrpt::bayes::CParticleFilter::prSystematic;  //!< resampling
+    bool decodeRaw = true;  //!< decode_raw: FFT-decode raw windows without codes
+    // [motion]
+    TMotionNoise motion;
+
+    /** Reads sections `<prefix>localization` and `<prefix>motion`, rejecting
+     * unknown keys. */
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                            const std::string& prefix) override;
+    void dumpToTextStream(std::ostream& out) const override;
+};
+
+/** What one step did. */
+struct TLocalizerStep {
+    bool started = false;       //!< estimation running (a unique ID was seen)
+    bool justStarted = false;   //!< this step saw the first unique ID
+    size_t readings = 0;        //!< readings with a code
+    size_t used = 0;            //!< readings that weighed the particles
+    size_t unknownIds = 0;      //!< codes forming an ID absent from the map
+    size_t decoded = 0;         //!< raw windows decoded here
+    size_t resetParticles = 0;  //!< particles redrawn by sensor resetting
+};
+
+class CIRLocalizer {
+  public:
+    /** `map` is shared: the association reference is set on it each step. */
+    CIRLocalizer(std::shared_ptr<rfir::maps::CIREmitterMap> map,
+                 const TLocalizerParams& p, uint64_t seed);
+
+    /** One instant: the odometry increment since the previous one (nullopt:
+     * not moved) and the IR observation (may be null). */
+    TLocalizerStep step(const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
+                        const rfir::obs::CObservationIRSignals* ir);
+
+    bool started() const { return m_started; }
+    /** Weighted mean of the particles (eq. 5.4). */
+    mrpt::poses::CPose2D estimate() const;
+    /** Weighted share of particles that place the reading's receiver within
+     * the emitter's visible radius. */
+    double fractionInView(const rfir::obs::CObservationIRSignals::TReading& r,
+                          const rfir::ir::TEmitter& e) const;
+    const mrpt::slam::CMonteCarloLocalization2D& particles() const { return m_pdf; }
+    const TLocalizerParams& params() const { return m_params; }
+
+  private:
+    rfir::obs::CObservationIRSignals::Ptr prepare(
+        const rfir::obs::CObservationIRSignals& in, TLocalizerStep& info) const;
+    void predict(const mrpt::poses::CPose2D& incr);
+    /** Redraws particles from the first unique reading of `obs`: all of them
+     * (`all`), or reset_ratio of those out of view when fewer than
+     * reset_min_fraction see it. Returns how many were redrawn. */
+    size_t sensorReset(const rfir::obs::CObservationIRSignals& obs, bool all);
+    double drawDistance(const rfir::obs::CObservationIRSignals::TReading& r,
+                        const rfir::ir::TEmitter& e);
+    /** A pose consistent with the readings of one emitter (one or two receivers). */
+    void drawFromReadings(
+        const std::vector<const rfir::obs::CObservationIRSignals::TReading*>& rs,
+        const rfir::ir::TEmitter& e, mrpt::math::TPose2D& out);
+
+    std::shared_ptr<rfir::maps::CIREmitterMap> m_map;
+    TLocalizerParams m_params;
+    mrpt::slam::CMonteCarloLocalization2D m_pdf;
+    mrpt::bayes::CParticleFilter m_pf;
+    mrpt::random::CRandomGenerator m_rng;
+    bool m_started = false;
+};
+
+}  // namespace rfir::ir

@@ -14,10 +14,8 @@ using namespace rfir::common;
 using namespace rfir::obs;
 using rfir_test::TmpDir;
 
-namespace
-{
-TEST(Import, TextToRawlogFollowsTheLayout)
-{
+namespace {
+TEST(Import, TextToRawlogFollowsTheLayout) {
     TmpDir d;
     const auto rep = convertTextLogToRawlog(rfir_test::kFull, d / "f.rawlog");
     EXPECT_EQ(rep.instants, 6u);
@@ -81,8 +79,7 @@ TEST(Import, TextToRawlogFollowsTheLayout)
     EXPECT_FALSE(r.next(st));
 }
 
-TEST(Import, TextRawlogTextGivesTheSameRecords)
-{
+TEST(Import, TextRawlogTextGivesTheSameRecords) {
     TmpDir d;
     convertTextLogToRawlog(rfir_test::kFull, d / "a.rawlog");
     convertRawlogToTextLog(d / "a.rawlog", d / "a.txt");
@@ -98,8 +95,7 @@ TEST(Import, TextRawlogTextGivesTheSameRecords)
         EXPECT_EQ(back.records[i], orig.records[i]) << i;
 }
 
-TEST(Import, RawlogTextRawlogIsIdenticalAndStable)
-{
+TEST(Import, RawlogTextRawlogIsIdenticalAndStable) {
     TmpDir d;
     convertTextLogToRawlog(rfir_test::kFull, d / "1.rawlog");
     convertRawlogToTextLog(d / "1.rawlog", d / "1.txt");
@@ -112,8 +108,7 @@ TEST(Import, RawlogTextRawlogIsIdenticalAndStable)
     EXPECT_EQ(rfir_test::slurp(d / "1.txt"), rfir_test::slurp(d / "2.txt"));
 }
 
-TEST(Import, WrittenRawlogWithFullPrecisionSurvivesText)
-{
+TEST(Import, WrittenRawlogWithFullPrecisionSurvivesText) {
     // A rawlog as a simulator writes it: values with all their digits.
     TmpDir d;
     std::mt19937 rng(3);
@@ -124,8 +119,7 @@ TEST(Import, WrittenRawlogWithFullPrecisionSurvivesText)
     auto hdr = rfir_test::randomHeader(rng);
     hdr.timestamp = mrpt::Clock::fromDouble(ts[0]);  // as the import sets it
     CRawlogWriter w(d / "sim.rawlog", hdr);
-    for (int k = 0; k < 60; k++)
-    {
+    for (int k = 0; k < 60; k++) {
         std::vector<mrpt::obs::CObservation::Ptr> obs;
         rfir_test::randomInstant(rng, hdr, k, obs);
         std::optional<mrpt::poses::CPose2D> odo;
@@ -138,21 +132,19 @@ TEST(Import, WrittenRawlogWithFullPrecisionSurvivesText)
     EXPECT_EQ(rfir_test::compareRawlogs(d / "sim.rawlog", d / "back.rawlog"), "");
 }
 
-TEST(Import, TimestampsRoundTrip)
-{
+TEST(Import, TimestampsRoundTrip) {
     // MRPT's fromDouble truncates t * 1e7 to 100 ns ticks. A t with at most 6
     // decimals comes back digit for digit; any t comes back on its own tick.
     for (double t : {0.0, 1e-6, 0.1, 0.3, 12.345, 59.999999, 86400.000001, 1e6 + 0.5,
-                     123456.765432, 9999999.999999})
-    {
+                     123456.765432, 9999999.999999}) {
         const auto ts = timestampFromT(t);
         ASSERT_TRUE(ts) << t;
         const auto s = formatTimestamp(*ts);
         ASSERT_TRUE(s) << t;
         EXPECT_EQ(*parseDecimal(*s), t) << *s;
     }
-    for (double t : {1e-7, 59.9999999, 123456.7654321, 1700000000.1234567, 99999999999.9})
-    {
+    for (double t :
+         {1e-7, 59.9999999, 123456.7654321, 1700000000.1234567, 99999999999.9}) {
         const auto ts = timestampFromT(t);
         const auto s = formatTimestamp(*ts);
         ASSERT_TRUE(s) << t;
@@ -161,8 +153,7 @@ TEST(Import, TimestampsRoundTrip)
     }
     std::mt19937_64 rng(5);
     std::uniform_int_distribution<int64_t> ticks(0, int64_t(1e14));
-    for (int i = 0; i < 20000; i++)
-    {
+    for (int i = 0; i < 20000; i++) {
         const int64_t n = ticks(rng);
         const double t6 = double(n / 10) / 1e6;  // 6 decimals, below 1e7 s
         const auto s6 = formatTimestamp(*timestampFromT(t6));
@@ -177,13 +168,11 @@ TEST(Import, TimestampsRoundTrip)
     EXPECT_FALSE(timestampFromT(1e11));
 }
 
-TEST(Import, RawlogOnlyRulesNameTheLine)
-{
+TEST(Import, RawlogOnlyRulesNameTheLine) {
     const std::string hdr =  // lines 1-5
         "format textlog 1\nreceiver L 0 0 1\nrb_sensor 0 0 0 1 1\nodom 1 0 0 0\n"
         "rb 1 A 0.3 0\n";
-    const struct
-    {
+    const struct {
         const char* body;
         const char* message;
     } cases[] = {
@@ -200,19 +189,15 @@ TEST(Import, RawlogOnlyRulesNameTheLine)
     };
     // A negative t needs a log that starts there.
     TmpDir d;
-    for (const auto& c : cases)
-    {
+    for (const auto& c : cases) {
         const bool negative = std::string(c.body).find("-2") != std::string::npos;
-        const std::string text = negative ? "format textlog 1\n" + std::string(c.body)
-                                          : hdr + c.body;
+        const std::string text =
+            negative ? "format textlog 1\n" + std::string(c.body) : hdr + c.body;
         std::ofstream(d / "in.txt") << text;
-        try
-        {
+        try {
             convertTextLogToRawlog(d / "in.txt", d / "out.rawlog");
             ADD_FAILURE() << "accepted: " << c.body;
-        }
-        catch (const TextLogError& e)
-        {
+        } catch (const TextLogError& e) {
             EXPECT_EQ(e.line(), negative ? 2u : 6u);
             EXPECT_EQ(e.message(), c.message);
             EXPECT_EQ(std::string(e.what()).rfind(d / "in.txt:", 0), 0u);
@@ -222,8 +207,7 @@ TEST(Import, RawlogOnlyRulesNameTheLine)
     }
 }
 
-TEST(Import, NothingIsWrittenOnError)
-{
+TEST(Import, NothingIsWrittenOnError) {
     TmpDir d;
     // A long valid log whose last line is malformed.
     std::string text = rfir_test::slurp(rfir_test::kFull);
@@ -238,8 +222,7 @@ TEST(Import, NothingIsWrittenOnError)
     EXPECT_EQ(d.count(), 2u);
 }
 
-TEST(Import, ExportIsStrictUnlessLossy)
-{
+TEST(Import, ExportIsStrictUnlessLossy) {
     TmpDir d;
     CObservationLogHeader h;
     h.readers = {{"R0", 0, 0, 0.03, 0.03}};
@@ -254,13 +237,10 @@ TEST(Import, ExportIsStrictUnlessLossy)
         w.writeStep(2, exactPose(0, 0, 0), {});
         w.close();
     }
-    try
-    {
+    try {
         convertRawlogToTextLog(d / "x.rawlog", d / "x.txt");
         FAIL();
-    }
-    catch (const std::runtime_error& e)
-    {
+    } catch (const std::runtime_error& e) {
         const std::string m = e.what();
         EXPECT_NE(m.find(d / "x.rawlog: instant 1 (t 1): IR reading with no code"),
                   std::string::npos)
@@ -277,8 +257,7 @@ TEST(Import, ExportIsStrictUnlessLossy)
     EXPECT_EQ(log.records[1].codes, (std::vector<uint8_t>{2, 5}));
 }
 
-TEST(Import, ExportRefusesWhatTheTextWouldChange)
-{
+TEST(Import, ExportRefusesWhatTheTextWouldChange) {
     TmpDir d;
     CObservationLogHeader h;
     h.readers = {{"R0", 0, 0, 0.03, 0.03}};
@@ -289,12 +268,9 @@ TEST(Import, ExportRefusesWhatTheTextWouldChange)
             w.writeStep(1, std::nullopt, {o});
             w.close();
         }
-        try
-        {
+        try {
             convertRawlogToTextLog(d / "y.rawlog", d / "y.txt");
-        }
-        catch (const std::runtime_error& e)
-        {
+        } catch (const std::runtime_error& e) {
             EXPECT_FALSE(fs::exists(d / "y.txt"));
             return std::string(e.what());
         }
@@ -307,28 +283,28 @@ TEST(Import, ExportRefusesWhatTheTextWouldChange)
     moved.reader.x = 0.5;  // not where the header puts R0
     moved.tags = {"T"};
     rf->readings.push_back(moved);
-    EXPECT_NE(run(rf).find("CObservationRFIDReaders with fields textlog 1 does not carry"),
-              std::string::npos);
+    EXPECT_NE(
+        run(rf).find("CObservationRFIDReaders with fields textlog 1 does not carry"),
+        std::string::npos);
     rf->readings[0].reader = h.readers[0];
     rf->sensorLabel = "MY_RFID";
     EXPECT_NE(run(rf).find("does not carry"), std::string::npos);
     rf->sensorLabel = "RFID";
     EXPECT_EQ(run(rf), "");
     rf->readings[0].reader.id = "R9";  // undeclared: the text would be invalid
-    EXPECT_NE(run(rf).find("would write an invalid text log line: rfid names reader 'R9'"),
-              std::string::npos);
+    EXPECT_NE(
+        run(rf).find("would write an invalid text log line: rfid names reader 'R9'"),
+        std::string::npos);
     auto other = std::make_shared<CObservationLogHeader>();  // a class with no record
     EXPECT_NE(run(other).find("observation of class rfir::obs::CObservationLogHeader"),
               std::string::npos);
 }
 
-TEST(Import, TimestampThatNoDecimalGivesIsRefused)
-{
+TEST(Import, TimestampThatNoDecimalGivesIsRefused) {
     // Near 1.7e9 s doubles are 2.4e-7 s apart: some 100 ns ticks (clock
     // readings) are the image of no decimal t.
     std::optional<mrpt::Clock::time_point> ts;
-    for (int64_t k = 0; k < 16 && !ts; k++)
-    {
+    for (int64_t k = 0; k < 16 && !ts; k++) {
         const mrpt::Clock::time_point c(mrpt::Clock::duration(
             mrpt::Clock::fromDouble(1700000000).time_since_epoch().count() + k));
         if (!formatTimestamp(c)) ts = c;
@@ -350,15 +326,13 @@ TEST(Import, TimestampThatNoDecimalGivesIsRefused)
         sf1.insert(rf);
         ar << acts << sf0 << acts << sf1;
     }
-    try
-    {
+    try {
         convertRawlogToTextLog(d / "t.rawlog", d / "t.txt");
         FAIL();
-    }
-    catch (const std::runtime_error& e)
-    {
-        EXPECT_NE(std::string(e.what()).find("timestamp that no decimal t maps to exactly"),
-                  std::string::npos)
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("timestamp that no decimal t maps to exactly"),
+            std::string::npos)
             << e.what();
     }
     TConvertOptions o;

@@ -8,18 +8,15 @@
 
 using rfir_test::TmpDir;
 
-namespace
-{
+namespace {
 const std::string kApp = std::string(RFIR_BINARY_DIR) + "/bin/rfir-import";
 
-struct TRun
-{
+struct TRun {
     int code = -1;
     std::string out, err;
 };
 
-TRun run(const TmpDir& d, const std::string& args)
-{
+TRun run(const TmpDir& d, const std::string& args) {
     const std::string cmd =
         kApp + " " + args + " >" + d / "stdout.log" + " 2>" + d / "stderr.log";
     const int st = std::system(cmd.c_str());
@@ -32,15 +29,14 @@ TRun run(const TmpDir& d, const std::string& args)
     return r;
 }
 
-TEST(ImportApp, HelpAndUsageErrors)
-{
+TEST(ImportApp, HelpAndUsageErrors) {
     TmpDir d;
     auto r = run(d, "--help");
     EXPECT_EQ(r.code, 0);
     EXPECT_NE(r.out.find("--input"), std::string::npos);
     EXPECT_NE(r.out.find("textlog 1"), std::string::npos);
-    EXPECT_EQ(run(d, "").code, 2);                      // required arguments missing
-    EXPECT_EQ(run(d, "--input a.txt").code, 2);         // no output
+    EXPECT_EQ(run(d, "").code, 2);               // required arguments missing
+    EXPECT_EQ(run(d, "--input a.txt").code, 2);  // no output
     EXPECT_EQ(run(d, "-i a.txt -o b.rawlog --frobnicate").code, 2);
     r = run(d, "-i " + rfir_test::kFull + " -o " + d / "out.csv");
     EXPECT_EQ(r.code, 2);
@@ -50,8 +46,7 @@ TEST(ImportApp, HelpAndUsageErrors)
     EXPECT_EQ(d.count(), 0u);
 }
 
-TEST(ImportApp, ImportsAndExports)
-{
+TEST(ImportApp, ImportsAndExports) {
     TmpDir d;
     auto r = run(d, "--input " + rfir_test::kFull + " --output " + d / "f.rawlog");
     EXPECT_EQ(r.code, 0) << r.err;
@@ -63,8 +58,7 @@ TEST(ImportApp, ImportsAndExports)
     EXPECT_EQ(rfir::common::readTextLog(d / "f.TXT").records.size(), 17u);
 }
 
-TEST(ImportApp, MalformedInputFailsWithFileLineAndWritesNothing)
-{
+TEST(ImportApp, MalformedInputFailsWithFileLineAndWritesNothing) {
     TmpDir d;
     std::ofstream(d / "bad.txt") << "format textlog 1\nreader R0 0 0 0.03 0.03\n"
                                     "odom 0 0 0 0\nrfid 0.1 R1 T1\n";
@@ -86,19 +80,20 @@ TEST(ImportApp, MalformedInputFailsWithFileLineAndWritesNothing)
     EXPECT_FALSE(fs::exists(d / "junk.txt"));
 }
 
-TEST(ImportApp, ProgressOnBigInputs)
-{
+TEST(ImportApp, ProgressOnBigInputs) {
     // About 2 MB of raw IR windows.
     TmpDir d;
     std::ofstream f(d / "big.txt");
     f << "format textlog 1\nreceiver L 0 0 1\n";
     std::string window;
-    for (int i = 0; i < 1000; i++) window += (i ? "," : "") + std::to_string(i % 7) + ".25";
+    for (int i = 0; i < 1000; i++)
+        window += (i ? "," : "") + std::to_string(i % 7) + ".25";
     for (int k = 0; k < 350; k++) f << "ir_raw " << k << " L 4000 " << window << "\n";
     f.close();
     const auto r = run(d, "-i " + d / "big.txt" + " -o " + d / "big.rawlog");
     EXPECT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.err.find("checking " + d / "big.txt" + ": 1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("checking " + d / "big.txt" + ": 1"), std::string::npos)
+        << r.err;
     EXPECT_NE(r.err.find("converting " + d / "big.txt" + ": 100 %"), std::string::npos);
     EXPECT_EQ(run(d, "-q -i " + d / "big.rawlog" + " -o " + d / "big2.txt").code, 0);
     EXPECT_EQ(rfir::common::readTextLog(d / "big2.txt").records.size(), 350u);

@@ -23,16 +23,13 @@
 
 namespace fs = std::filesystem;
 
-namespace rfir_test
-{
+namespace rfir_test {
 inline const std::string kFull =
     std::string(RFIR_SOURCE_DIR) + "/tests/data/textlog/full.txt";
 
-struct TmpDir
-{
+struct TmpDir {
     fs::path p;
-    TmpDir()
-    {
+    TmpDir() {
         static int n = 0;
         p = fs::temp_directory_path() /
             ("rfir_import_" + std::to_string(getpid()) + "_" + std::to_string(n++));
@@ -43,16 +40,14 @@ struct TmpDir
     size_t count() const { return size_t(std::distance(fs::directory_iterator(p), {})); }
 };
 
-inline std::string slurp(const std::string& path)
-{
+inline std::string slurp(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     std::ostringstream s;
     s << f.rdbuf();
     return s.str();
 }
 
-inline std::string gunzip(const std::string& path)
-{
+inline std::string gunzip(const std::string& path) {
     mrpt::io::CFileGZInputStream f(path);
     std::string out;
     char buf[65536];
@@ -61,14 +56,12 @@ inline std::string gunzip(const std::string& path)
 }
 
 /** "" if both rawlogs hold the same objects, byte for byte; else where not. */
-inline std::string compareRawlogs(const std::string& a, const std::string& b)
-{
+inline std::string compareRawlogs(const std::string& a, const std::string& b) {
     using rfir::common::sameSerialization;
     rfir::common::CRawlogReader ra(a), rb(b);
     if (!sameSerialization(ra.header(), rb.header())) return "headers differ";
     rfir::common::TRawlogStep sa, sb;
-    for (size_t i = 0;; i++)
-    {
+    for (size_t i = 0;; i++) {
         const bool ha = ra.next(sa), hb = rb.next(sb);
         if (ha != hb) return "different number of instants (" + std::to_string(i) + ")";
         if (!ha) return "";
@@ -85,14 +78,15 @@ inline std::string compareRawlogs(const std::string& a, const std::string& b)
 }
 
 /** A header with full-precision values; 5 landmark names used in order. */
-inline rfir::obs::CObservationLogHeader randomHeader(std::mt19937& rng)
-{
+inline rfir::obs::CObservationLogHeader randomHeader(std::mt19937& rng) {
     std::uniform_real_distribution<double> u(-1, 1), s(0.01, 0.2);
     rfir::obs::CObservationLogHeader h;
     for (int i = 0; i < 8; i++)
         h.readers.push_back({"R" + std::to_string(i), u(rng), u(rng), s(rng), s(rng)});
-    h.receivers = {{"left", u(rng), u(rng), 0.3 + s(rng)}, {"right", u(rng), u(rng), 0.4}};
-    h.rbSensor = rfir::obs::TRBSensor{u(rng), u(rng), 3 * u(rng), 0.5 + s(rng), 2 + u(rng)};
+    h.receivers = {{"left", u(rng), u(rng), 0.3 + s(rng)},
+                   {"right", u(rng), u(rng), 0.4}};
+    h.rbSensor =
+        rfir::obs::TRBSensor{u(rng), u(rng), 3 * u(rng), 0.5 + s(rng), 2 + u(rng)};
     h.startPose = rfir::common::exactPose(u(rng), u(rng), 3 * u(rng));
     for (int i = 0; i < 5; i++) h.rbLandmarkNames.push_back("LM" + std::to_string(i));
     h.timestamp = mrpt::Clock::fromDouble(0);  // what the import will rebuild
@@ -102,14 +96,12 @@ inline rfir::obs::CObservationLogHeader randomHeader(std::mt19937& rng)
 /** Observations of instant k, as a simulator would make them (ir_raw
  * readings carry their own decoding, as the import computes it). */
 inline void randomInstant(std::mt19937& rng, const rfir::obs::CObservationLogHeader& h,
-                          int k, std::vector<mrpt::obs::CObservation::Ptr>& obs)
-{
+                          int k, std::vector<mrpt::obs::CObservation::Ptr>& obs) {
     using namespace rfir::obs;
     std::uniform_real_distribution<double> u(0, 1);
     auto rf = CObservationRFIDReaders::Create();
     rf->sensorLabel = "RFID";
-    for (const auto& r : h.readers)
-    {
+    for (const auto& r : h.readers) {
         if (u(rng) < 0.5) continue;
         std::vector<std::string> tags;
         for (int n = int(3 * u(rng)); n > 0; n--)
@@ -119,21 +111,17 @@ inline void randomInstant(std::mt19937& rng, const rfir::obs::CObservationLogHea
     if (!rf->readings.empty()) obs.push_back(rf);
     auto ir = CObservationIRSignals::Create();
     ir->sensorLabel = "IR";
-    for (const auto& rc : h.receivers)
-    {
+    for (const auto& rc : h.receivers) {
         CObservationIRSignals::TReading rd;
         rd.receiver = rc;
         std::vector<uint8_t> codes;
         for (uint8_t c = 1; c <= 9; c++)
             if (u(rng) < 0.25) codes.push_back(c);
         if (codes.empty()) codes.push_back(uint8_t(1 + k % 9));
-        if (k % 2)
-        {
+        if (k % 2) {
             rd.codes = codes;
             rd.volts = 2 * u(rng);
-        }
-        else
-        {
+        } else {
             rd.rateHz = 4000 + 1000 * u(rng);
             rd.raw = rfir::ir::synthesizeIRWindow(codes, 1 + u(rng), 0.3, rd.rateHz, 600,
                                                   {u(rng), u(rng), u(rng), u(rng)});
@@ -159,8 +147,7 @@ inline void randomInstant(std::mt19937& rng, const rfir::obs::CObservationLogHea
     std::shuffle(ids.begin(), ids.end(), rng);
     if (k < 5) ids.insert(ids.begin(), k);
     ids.resize(std::min<size_t>(ids.size(), 3));
-    for (int32_t id : ids)
-    {
+    for (int32_t id : ids) {
         mrpt::obs::CObservationBearingRange::TMeasurement m;
         m.landmarkID = id;
         m.range = float(0.5 * u(rng) + 1e-3);

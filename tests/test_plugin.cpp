@@ -13,16 +13,13 @@
 
 using rfir_test::TmpDir;
 
-namespace
-{
+namespace {
 const std::string kPlugin = std::string(RFIR_BINARY_DIR) + "/lib/librfir_mrpt_plugin.so";
 
-std::string findProgram(const std::string& name)
-{
+std::string findProgram(const std::string& name) {
     const char* path = std::getenv("PATH");
     std::string dirs = path ? path : "/usr/bin:/bin";
-    for (size_t i = 0; i <= dirs.size();)
-    {
+    for (size_t i = 0; i <= dirs.size();) {
         const size_t j = std::min(dirs.find(':', i), dirs.size());
         const fs::path p = fs::path(dirs.substr(i, j - i)) / name;
         if (!p.parent_path().empty() && fs::exists(p)) return p.string();
@@ -32,30 +29,27 @@ std::string findProgram(const std::string& name)
 }
 
 /** Runs a command, stdout and stderr together. */
-std::string run(const TmpDir& d, const std::string& cmd, int& code)
-{
+std::string run(const TmpDir& d, const std::string& cmd, int& code) {
     const int st = std::system((cmd + " >" + d / "out.log" + " 2>&1").c_str());
     code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
     return rfir_test::slurp(d / "out.log");
 }
 
-size_t countOf(const std::string& text, const std::string& what)
-{
+size_t countOf(const std::string& text, const std::string& what) {
     size_t n = 0;
-    for (size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) n++;
+    for (size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1))
+        n++;
     return n;
 }
 
-std::set<std::string> rfirClasses()
-{
+std::set<std::string> rfirClasses() {
     std::set<std::string> s;
     for (const auto* c : mrpt::rtti::getAllRegisteredClasses())
         if (std::string(c->className).rfind("rfir::", 0) == 0) s.insert(c->className);
     return s;
 }
 
-TEST(Plugin, LoadingItRegistersEveryLinkedLibrarysClasses)
-{
+TEST(Plugin, LoadingItRegistersEveryLinkedLibrarysClasses) {
     ASSERT_TRUE(fs::exists(kPlugin)) << kPlugin;
     void* h = dlopen(kPlugin.c_str(), RTLD_NOW | RTLD_GLOBAL);
     ASSERT_TRUE(h) << dlerror();
@@ -64,36 +58,33 @@ TEST(Plugin, LoadingItRegistersEveryLinkedLibrarysClasses)
     ASSERT_TRUE(libs);
     const std::string list = libs();
     const auto cls = rfirClasses();
-    for (const char* c : {"rfir::obs::CObservationRFIDReaders", "rfir::obs::CObservationIRSignals",
-                          "rfir::obs::CObservationLogHeader"})
+    for (const char* c :
+         {"rfir::obs::CObservationRFIDReaders", "rfir::obs::CObservationIRSignals",
+          "rfir::obs::CObservationLogHeader"})
         EXPECT_TRUE(cls.count(c)) << c;
     // The other libraries it carries bring their own classes (the maps that
     // pf-localization / rbpf-slam INI files name).
     const std::pair<const char*, const char*> expected[] = {
         {"rfir_maps", "rfir::maps::CRFIDTagParticleMap"},
         {"rfir_ir", "rfir::maps::CIREmitterMap"}};
-    for (const auto& [lib, c] : expected)
-    {
-        if (list.find(lib) != std::string::npos)
-        {
+    for (const auto& [lib, c] : expected) {
+        if (list.find(lib) != std::string::npos) {
             EXPECT_TRUE(cls.count(c)) << lib << ": " << c;
         }
     }
-    std::cerr << "plugin libraries: " << list << "; rfir classes registered: " << cls.size()
-              << "\n";
+    std::cerr << "plugin libraries: " << list
+              << "; rfir classes registered: " << cls.size() << "\n";
 }
 
-class RawlogEdit : public ::testing::Test
-{
-protected:
-    void SetUp() override
-    {
+class RawlogEdit : public ::testing::Test {
+  protected:
+    void SetUp() override {
         tool_ = findProgram("rawlog-edit");
-        if (tool_.empty()) GTEST_SKIP() << "rawlog-edit (package mrpt-apps) is not installed";
+        if (tool_.empty())
+            GTEST_SKIP() << "rawlog-edit (package mrpt-apps) is not installed";
         rfir::common::convertTextLogToRawlog(rfir_test::kFull, d_ / "f.rawlog");
     }
-    std::string edit(const std::string& op, bool plugin, int& code)
-    {
+    std::string edit(const std::string& op, bool plugin, int& code) {
         return run(d_,
                    tool_ + " " + op + " -i " + d_ / "f.rawlog" +
                        (plugin ? " -p " + kPlugin : std::string()),
@@ -103,8 +94,7 @@ protected:
     std::string tool_;
 };
 
-TEST_F(RawlogEdit, InfoListsTheProjectsSensorsWithThePlugin)
-{
+TEST_F(RawlogEdit, InfoListsTheProjectsSensorsWithThePlugin) {
     int code = 0;
     const auto out = edit("--info", true, code);
     EXPECT_EQ(code, 0) << out;
@@ -119,11 +109,11 @@ TEST_F(RawlogEdit, InfoListsTheProjectsSensorsWithThePlugin)
              {"HEADER", 1}, {"RFID", 3}, {"IR", 4}, {"RB", 2}, {"ODOMETRY", 5}})
         EXPECT_TRUE(std::regex_search(
             out, std::regex(" " + label + " / +" + std::to_string(n) + " /")))
-            << label << "\n" << out;
+            << label << "\n"
+            << out;
 }
 
-TEST_F(RawlogEdit, DescribeShowsEveryObservationClass)
-{
+TEST_F(RawlogEdit, DescribeShowsEveryObservationClass) {
     int code = 0;
     const auto out = edit("--describe", true, code);
     EXPECT_EQ(code, 0);
@@ -140,8 +130,7 @@ TEST_F(RawlogEdit, DescribeShowsEveryObservationClass)
     EXPECT_NE(out.find("raw window: 1024 samples at 5000.0 Hz"), std::string::npos);
 }
 
-TEST_F(RawlogEdit, WithoutThePluginTheClassesAreNotRead)
-{
+TEST_F(RawlogEdit, WithoutThePluginTheClassesAreNotRead) {
     int code = 0;
     const auto info = edit("--info", false, code);
     EXPECT_NE(info.find("rfir::obs::CObservationLogHeader"), std::string::npos) << info;

@@ -18,12 +18,10 @@ using namespace rfir::common;
 using namespace rfir::obs;
 
 // A class the rawlog can hold but that nobody registers with MRPT.
-namespace rfir_test
-{
-class CUnregisteredObs : public mrpt::obs::CObservation
-{
+namespace rfir_test {
+class CUnregisteredObs : public mrpt::obs::CObservation {
     DEFINE_SERIALIZABLE(CUnregisteredObs, rfir_test)
-public:
+  public:
     void getSensorPose(mrpt::poses::CPose3D& p) const override { p = {}; }
     void setSensorPose(const mrpt::poses::CPose3D&) override {}
     using mrpt::obs::CObservation::getSensorPose;
@@ -31,29 +29,28 @@ public:
 };
 }  // namespace rfir_test
 IMPLEMENTS_SERIALIZABLE(CUnregisteredObs, mrpt::obs::CObservation, rfir_test)
-uint8_t rfir_test::CUnregisteredObs::serializeGetVersion() const { return 0; }
-void rfir_test::CUnregisteredObs::serializeTo(mrpt::serialization::CArchive& o) const
-{
+uint8_t rfir_test::CUnregisteredObs::serializeGetVersion() const {
+    return 0;
+}
+void rfir_test::CUnregisteredObs::serializeTo(mrpt::serialization::CArchive& o) const {
     o << timestamp << sensorLabel;
 }
-void rfir_test::CUnregisteredObs::serializeFrom(mrpt::serialization::CArchive& i, uint8_t)
-{
+void rfir_test::CUnregisteredObs::serializeFrom(mrpt::serialization::CArchive& i,
+                                                uint8_t) {
     i >> timestamp >> sensorLabel;
 }
 
-namespace
-{
-struct TmpDir
-{
-    fs::path p = fs::temp_directory_path() / ("rfir_rawlog_io_" + std::to_string(getpid()));
+namespace {
+struct TmpDir {
+    fs::path p =
+        fs::temp_directory_path() / ("rfir_rawlog_io_" + std::to_string(getpid()));
     TmpDir() { fs::create_directories(p); }
     ~TmpDir() { fs::remove_all(p); }
     std::string operator/(const std::string& f) const { return (p / f).string(); }
     size_t count() const { return size_t(std::distance(fs::directory_iterator(p), {})); }
 };
 
-CObservationLogHeader header()
-{
+CObservationLogHeader header() {
     CObservationLogHeader h;
     h.readers = {{"R0", 0.1, 0, 0.03, 0.03}};
     h.receivers = {{"left", 0, 0.2, 0.3}};
@@ -61,19 +58,16 @@ CObservationLogHeader header()
     return h;
 }
 
-CObservationRFIDReaders::Ptr rfidObs(const std::string& tag)
-{
+CObservationRFIDReaders::Ptr rfidObs(const std::string& tag) {
     auto o = CObservationRFIDReaders::Create();
     o->sensorLabel = "RFID";
     o->readings.push_back({header().readers[0], {tag}});
     return o;
 }
 
-void writeSteps(const std::string& path, size_t n)
-{
+void writeSteps(const std::string& path, size_t n) {
     CRawlogWriter w(path, header());
-    for (size_t i = 0; i < n; i++)
-    {
+    for (size_t i = 0; i < n; i++) {
         auto ir = CObservationIRSignals::Create();
         ir->sensorLabel = "IR";
         CObservationIRSignals::TReading rd;
@@ -81,30 +75,25 @@ void writeSteps(const std::string& path, size_t n)
         rd.rateHz = 8000;
         rd.raw.assign(256, float(i));
         ir->readings.push_back(rd);
-        w.writeStep(0.1 * i, exactPose(0.01 * i, 0, 0), {rfidObs("T" + std::to_string(i)), ir});
+        w.writeStep(0.1 * i, exactPose(0.01 * i, 0, 0),
+                    {rfidObs("T" + std::to_string(i)), ir});
     }
     w.close();
 }
 
-std::string readAllError(const std::string& path)
-{
-    try
-    {
+std::string readAllError(const std::string& path) {
+    try {
         CRawlogReader r(path);
         TRawlogStep st;
-        while (r.next(st))
-        {
+        while (r.next(st)) {
         }
-    }
-    catch (const std::runtime_error& e)
-    {
+    } catch (const std::runtime_error& e) {
         return e.what();
     }
     return "";
 }
 
-TEST(RawlogIO, WriterReaderPair)
-{
+TEST(RawlogIO, WriterReaderPair) {
     TmpDir d;
     const auto path = d / "a.rawlog";
     {
@@ -144,8 +133,7 @@ TEST(RawlogIO, WriterReaderPair)
     EXPECT_FALSE(r.next(st));
 }
 
-TEST(RawlogIO, UnclosedWriterLeavesNothing)
-{
+TEST(RawlogIO, UnclosedWriterLeavesNothing) {
     TmpDir d;
     {
         CRawlogWriter w(d / "b.rawlog", header());
@@ -154,28 +142,23 @@ TEST(RawlogIO, UnclosedWriterLeavesNothing)
     EXPECT_EQ(d.count(), 0u);
 }
 
-TEST(RawlogIO, WriterToMissingFolderNamesTheFile)
-{
-    try
-    {
+TEST(RawlogIO, WriterToMissingFolderNamesTheFile) {
+    try {
         CRawlogWriter w("/nonexistent_dir/x.rawlog", header());
         FAIL();
-    }
-    catch (const std::runtime_error& e)
-    {
-        EXPECT_NE(std::string(e.what()).find("/nonexistent_dir/x.rawlog"), std::string::npos);
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("/nonexistent_dir/x.rawlog"),
+                  std::string::npos);
     }
 }
 
-TEST(RawlogIO, TruncatedRawlogThrowsNamingTheFile)
-{
+TEST(RawlogIO, TruncatedRawlogThrowsNamingTheFile) {
     TmpDir d;
     const auto path = d / "c.rawlog";
     writeSteps(path, 300);
     EXPECT_EQ(readAllError(path), "");
     const auto size = fs::file_size(path);
-    for (double frac : {0.5, 0.9, 0.999})
-    {
+    for (double frac : {0.5, 0.9, 0.999}) {
         fs::copy_file(path, d / "cut.rawlog", fs::copy_options::overwrite_existing);
         fs::resize_file(d / "cut.rawlog", uintmax_t(size * frac));
         const auto err = readAllError(d / "cut.rawlog");
@@ -185,8 +168,7 @@ TEST(RawlogIO, TruncatedRawlogThrowsNamingTheFile)
     EXPECT_NE(readAllError(d / "cut.rawlog").find("cut.rawlog"), std::string::npos);
 }
 
-TEST(RawlogIO, CorruptObjectThrowsNamingTheFileAndEntry)
-{
+TEST(RawlogIO, CorruptObjectThrowsNamingTheFileAndEntry) {
     TmpDir d;
     const auto path = d / "d.rawlog";
     {
@@ -203,35 +185,31 @@ TEST(RawlogIO, CorruptObjectThrowsNamingTheFileAndEntry)
     EXPECT_NE(err.find(path + ": entry 3"), std::string::npos) << err;
 }
 
-TEST(RawlogIO, UnregisteredClassIsAnErrorNotAnEnd)
-{
+TEST(RawlogIO, UnregisteredClassIsAnErrorNotAnEnd) {
     TmpDir d;
     const auto path = d / "e.rawlog";
     {
         CRawlogWriter w(path, header());
         w.writeStep(0, exactPose(0, 0, 0), {rfidObs("T1")});
-        w.writeStep(1, exactPose(0, 0, 0), {std::make_shared<rfir_test::CUnregisteredObs>()});
+        w.writeStep(1, exactPose(0, 0, 0),
+                    {std::make_shared<rfir_test::CUnregisteredObs>()});
         w.writeStep(2, exactPose(0, 0, 0), {rfidObs("T3")});
         w.close();
     }
     CRawlogReader r(path);
     TRawlogStep st;
     ASSERT_TRUE(r.next(st));
-    try
-    {
+    try {
         r.next(st);
         FAIL() << "an unregistered class was read as the end of the file";
-    }
-    catch (const std::runtime_error& e)
-    {
+    } catch (const std::runtime_error& e) {
         const std::string m = e.what();
         EXPECT_NE(m.find(path + ": entry"), std::string::npos) << m;
         EXPECT_NE(m.find("CUnregisteredObs"), std::string::npos) << m;
     }
 }
 
-TEST(RawlogIO, RawlogWithoutHeaderIsReadWithAnEmptyHeader)
-{
+TEST(RawlogIO, RawlogWithoutHeaderIsReadWithAnEmptyHeader) {
     TmpDir d;
     const auto path = d / "f.rawlog";
     {
@@ -255,12 +233,12 @@ TEST(RawlogIO, RawlogWithoutHeaderIsReadWithAnEmptyHeader)
     EXPECT_FALSE(r.next(st));
 }
 
-TEST(RawlogIO, NotARawlogIsRejected)
-{
+TEST(RawlogIO, NotARawlogIsRejected) {
     TmpDir d;
     std::ofstream(d / "g.rawlog") << "format textlog 1\n";
     EXPECT_NE(readAllError(d / "g.rawlog").find("g.rawlog"), std::string::npos);
-    EXPECT_NE(readAllError(d / "missing.rawlog").find("missing.rawlog"), std::string::npos);
+    EXPECT_NE(readAllError(d / "missing.rawlog").find("missing.rawlog"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -12,12 +12,10 @@
 using namespace rfir::common;
 using K = TTimedRecord::Kind;
 
-namespace
-{
+namespace {
 const std::string kFull = std::string(RFIR_SOURCE_DIR) + "/tests/data/textlog/full.txt";
 
-TEST(TextLog, WellFormedLogWithEveryRecordType)
-{
+TEST(TextLog, WellFormedLogWithEveryRecordType) {
     const auto log = readTextLog(kFull);
     const auto& h = log.header;
     ASSERT_EQ(h.readers.size(), 2u);
@@ -57,8 +55,7 @@ TEST(TextLog, WellFormedLogWithEveryRecordType)
     EXPECT_EQ(r.back().t, 0.5);
 }
 
-TEST(TextLog, TabsCarriageReturnsAndComments)
-{
+TEST(TextLog, TabsCarriageReturnsAndComments) {
     std::istringstream in(
         "# leading comment\n\n  \t\nformat textlog 1\r\nreader\tR0\t0 0 0.03 0.03 # c\r\n"
         "odom 0 0 0 0#no space before the comment\n");
@@ -68,30 +65,25 @@ TEST(TextLog, TabsCarriageReturnsAndComments)
     EXPECT_EQ(log.records[0].line, 6u);
 }
 
-TEST(TextLog, SameIdForAReaderAndAReceiverIsAllowed)
-{
+TEST(TextLog, SameIdForAReaderAndAReceiverIsAllowed) {
     // Duplicates are per kind: readers 0..7 and receivers 0..1 are common.
     std::istringstream in("format textlog 1\nreader 0 0 0 1 1\nreceiver 0 0 0 1\n");
     EXPECT_NO_THROW(readTextLog(in, "x.txt"));
 }
 
-TEST(TextLog, DecimalSyntax)
-{
+TEST(TextLog, DecimalSyntax) {
     for (const char* ok : {"0", "-0", "+1", "1.", ".5", "-.5", "1e3", "1E-3", "2.5e+2"})
         EXPECT_TRUE(parseDecimal(ok)) << ok;
-    for (const char* bad :
-         {"", "+", "-", ".", "e3", "1e", "1e+", "0x10", "1,5", "1..2", "nan", "inf", "1 ",
-          "--1", "1e999", "1f"})
+    for (const char* bad : {"", "+", "-", ".", "e3", "1e", "1e+", "0x10", "1,5", "1..2",
+                            "nan", "inf", "1 ", "--1", "1e999", "1f"})
         EXPECT_FALSE(parseDecimal(bad)) << bad;
     EXPECT_EQ(*parseDecimal("2.5e+2"), 250.0);
 }
 
-TEST(TextLog, ShortestNumbersReadBackExactly)
-{
+TEST(TextLog, ShortestNumbersReadBackExactly) {
     std::mt19937_64 rng(42);
     std::uniform_real_distribution<double> u(-1e3, 1e3);
-    for (int i = 0; i < 20000; i++)
-    {
+    for (int i = 0; i < 20000; i++) {
         const double d = i % 3 ? u(rng) : u(rng) * 1e-9;
         EXPECT_EQ(*parseDecimal(formatNumber(d)), d);
         const float f = float(d);
@@ -104,8 +96,7 @@ TEST(TextLog, ShortestNumbersReadBackExactly)
               std::numeric_limits<double>::denorm_min());
 }
 
-TEST(TextLog, BearingNearPiStaysInRangeAsAFloat)
-{
+TEST(TextLog, BearingNearPiStaysInRangeAsAFloat) {
     // float(pi) is above pi: a bearing of pi is stored as the float just below.
     std::istringstream in(
         "format textlog 1\nrb_sensor 0 0 0 1 6\nrb 0 L 0.3 3.141592653589793\n");
@@ -119,8 +110,7 @@ TEST(TextLog, BearingNearPiStaysInRangeAsAFloat)
     EXPECT_EQ(readTextLog(back, "y.txt").records[0].bearing, b);
 }
 
-TEST(TextLog, WriterOutputParsesToTheSameLog)
-{
+TEST(TextLog, WriterOutputParsesToTheSameLog) {
     const auto log = readTextLog(kFull);
     std::ostringstream o;
     writeTextLog(o, log);
@@ -136,8 +126,7 @@ TEST(TextLog, WriterOutputParsesToTheSameLog)
     EXPECT_EQ(o2.str(), o.str());
 }
 
-TEST(TextLog, CanonicalOrderWithinAnInstant)
-{
+TEST(TextLog, CanonicalOrderWithinAnInstant) {
     std::istringstream in(
         "format textlog 1\nreader R 0 0 1 1\nreceiver L 0 0 1\nrb_sensor 0 0 0 1 1\n"
         "rb 1 A 0.5 0\nir 1 L 2 1\nrfid 1 R\nodom 1 0 0 0\nir_raw 1 L 100 1,2\n"
@@ -150,15 +139,11 @@ TEST(TextLog, CanonicalOrderWithinAnInstant)
                                      K::Rfid}));
 }
 
-TEST(TextLog, MissingFileNamesIt)
-{
-    try
-    {
+TEST(TextLog, MissingFileNamesIt) {
+    try {
         readTextLog("/nonexistent/x.txt");
         FAIL();
-    }
-    catch (const std::runtime_error& e)
-    {
+    } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/x.txt"), std::string::npos);
     }
 }

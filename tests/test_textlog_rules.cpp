@@ -9,8 +9,7 @@
 
 using namespace rfir::common;
 
-namespace
-{
+namespace {
 // Lines 1-5 of every case that does not bring its own header.
 const char* kHeader =
     "format textlog 1\n"
@@ -19,8 +18,7 @@ const char* kHeader =
     "rb_sensor 0.2 0 0 0.5 2\n"
     "odom 1 0 0 0\n";
 
-struct TCase
-{
+struct TCase {
     const char* name;
     bool ownHeader;    // the body is the whole file
     const char* body;  // appended after kHeader otherwise (from line 6)
@@ -33,19 +31,27 @@ const TCase kCases[] = {
     {"no format line", true, "reader R0 0 0 1 1\n", 1,
      "the first record must be 'format textlog 1', got 'reader R0'"},
     {"other version", true, "# v2\nformat textlog 2\n", 2,
-     "unsupported format line 'format textlog 2' (this program reads 'format textlog 1')"},
+     "unsupported format line 'format textlog 2' (this program reads 'format textlog "
+     "1')"},
+    {"byte order mark", true,
+     "\xEF\xBB\xBF"
+     "format textlog 1\n",
+     1, "the file starts with a UTF-8 byte order mark: save it without one"},
     {"format with extra field", true, "format textlog 1 x\n", 1,
-     "unsupported format line 'format textlog 1 x' (this program reads 'format textlog 1')"},
+     "unsupported format line 'format textlog 1 x' (this program reads 'format textlog "
+     "1')"},
     {"empty log", true, "# only a comment\n\n", 2,
      "empty text log: the first record must be 'format textlog 1'"},
     {"format twice", false, "format textlog 1\n", 6,
      "'format' may appear only once, as the first record"},
     // Unknown records and field counts.
     {"unknown record", false, "lidar 1 2 3\n", 6,
-     "unknown record 'lidar' (expected reader, receiver, rb_sensor, start, odom, rfid, ir, "
+     "unknown record 'lidar' (expected reader, receiver, rb_sensor, start, odom, rfid, "
+     "ir, "
      "ir_raw or rb)"},
     {"record names are case-sensitive", false, "ODOM 2 0 0 0\n", 6,
-     "unknown record 'ODOM' (expected reader, receiver, rb_sensor, start, odom, rfid, ir, "
+     "unknown record 'ODOM' (expected reader, receiver, rb_sensor, start, odom, rfid, "
+     "ir, "
      "ir_raw or rb)"},
     {"reader fields", true, "format textlog 1\nreader R0 0 0 0.03\n", 2,
      "'reader' takes 5 fields (<reader_id> <x> <y> <half_x> <half_y>), got 4"},
@@ -171,22 +177,16 @@ const TCase kCases[] = {
      "sample 2 '1e40' of the ir_raw window is not a finite decimal number"},
 };
 
-class TextLogRule : public ::testing::TestWithParam<TCase>
-{
-};
+class TextLogRule : public ::testing::TestWithParam<TCase> {};
 
-TEST_P(TextLogRule, IsRejectedWithFileLineAndMessage)
-{
+TEST_P(TextLogRule, IsRejectedWithFileLineAndMessage) {
     const TCase& c = GetParam();
     const std::string text = c.ownHeader ? c.body : std::string(kHeader) + c.body;
     std::istringstream in(text);
-    try
-    {
+    try {
         readTextLog(in, "case.txt");
         FAIL() << "accepted: " << c.name;
-    }
-    catch (const TextLogError& e)
-    {
+    } catch (const TextLogError& e) {
         EXPECT_EQ(e.line(), c.line) << c.name;
         EXPECT_EQ(e.message(), c.message) << c.name;
         EXPECT_EQ(std::string(e.what()),
@@ -194,8 +194,7 @@ TEST_P(TextLogRule, IsRejectedWithFileLineAndMessage)
     }
 }
 
-std::string caseName(const ::testing::TestParamInfo<TCase>& i)
-{
+std::string caseName(const ::testing::TestParamInfo<TCase>& i) {
     std::string n;
     for (const char* p = i.param.name; *p; p++)
         n += std::isalnum(static_cast<unsigned char>(*p)) ? *p : '_';
@@ -204,8 +203,7 @@ std::string caseName(const ::testing::TestParamInfo<TCase>& i)
 
 INSTANTIATE_TEST_SUITE_P(All, TextLogRule, ::testing::ValuesIn(kCases), caseName);
 
-TEST(TextLogRules, HeaderAloneIsWellFormed)
-{
+TEST(TextLogRules, HeaderAloneIsWellFormed) {
     // The common prefix of the cases is itself valid: each case fails only
     // because of its own line.
     std::istringstream in(kHeader);

@@ -7,8 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
-namespace
-{
+namespace {
 const char* kDescription =
     "Converts a plain-text sensor log (format textlog 1) into an MRPT rawlog in the "
     "rfir layout, or a rawlog back into a text log. The direction follows the file "
@@ -16,27 +15,23 @@ const char* kDescription =
     "Y.txt exports. The whole input is checked before anything is written; a malformed "
     "line is reported as FILE:LINE: what is wrong, and nothing is written.";
 
-int run(const std::string& in, const std::string& out, bool lossy, bool quiet)
-{
+int run(const std::string& in, const std::string& out, bool lossy, bool quiet) {
     using namespace rfir::common;
     const auto ki = logFileKind(in), ko = logFileKind(out);
     const bool toRawlog = ki == TLogFileKind::Text && ko == TLogFileKind::Rawlog;
     const bool toText = ki == TLogFileKind::Rawlog && ko == TLogFileKind::Text;
-    if (!toRawlog && !toText)
-    {
+    if (!toRawlog && !toText) {
         std::cerr << "error: cannot tell the direction from the file names '" << in
                   << "' -> '" << out
                   << "': use --input X.txt --output Y.rawlog (import) or --input "
                      "X.rawlog --output Y.txt (export)\n";
         return 2;
     }
-    if (lossy && toRawlog)
-    {
+    if (lossy && toRawlog) {
         std::cerr << "error: --lossy applies to rawlog -> text only\n";
         return 2;
     }
-    if (!std::filesystem::is_regular_file(in))
-    {
+    if (!std::filesystem::is_regular_file(in)) {
         std::cerr << "error: " << in << ": no such file\n";
         return 1;
     }
@@ -45,8 +40,7 @@ int run(const std::string& in, const std::string& out, bool lossy, bool quiet)
     opts.progress = quiet ? nullptr : &std::cerr;
     const auto rep = toRawlog ? convertTextLogToRawlog(in, out, opts)
                               : convertRawlogToTextLog(in, out, opts);
-    if (!quiet)
-    {
+    if (!quiet) {
         std::cerr << "rfir-import: wrote " << out << ": " << rep.instants
                   << " sensing instant(s), " << rep.timedRecords << " timed record(s)\n";
         for (const auto& [what, n] : rep.dropped)
@@ -56,10 +50,8 @@ int run(const std::string& in, const std::string& out, bool lossy, bool quiet)
 }
 }  // namespace
 
-int main(int argc, char** argv)
-{
-    try
-    {
+int main(int argc, char** argv) {
+    try {
         TCLAP::CmdLine cmd(kDescription, ' ', "1.0");
         TCLAP::ValueArg<std::string> in("i", "input", "input file: .txt or .rawlog", true,
                                         "", "FILE", cmd);
@@ -71,21 +63,17 @@ int main(int argc, char** argv)
                                cmd, false);
         TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on stderr", cmd,
                                false);
-        if (!cmd.parse(argc, argv))
-        {
+        if (!cmd.parse(argc, argv)) {
             // MRPT's TCLAP returns false both after --help/--version and after
             // printing a command-line error.
-            for (int i = 1; i < argc; i++)
-            {
+            for (int i = 1; i < argc; i++) {
                 const std::string a = argv[i];
                 if (a == "-h" || a == "--help" || a == "--version") return 0;
             }
             return 2;
         }
         return run(in.getValue(), out.getValue(), lossy.getValue(), quiet.getValue());
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
     }

@@ -7,11 +7,13 @@
 
 #include <mrpt/core/initializer.h>
 
-MRPT_INITIALIZER(rfir_mrpt_plugin_init) { rfir::obs::registerAllClasses(); }
+MRPT_INITIALIZER(rfir_mrpt_plugin_init) {
+    rfir::obs::registerAllClasses();
+}
 
 /** Which rfir libraries this build of the plugin carries (for diagnostics:
  * `nm -D` or dlsym). */
-extern "C" __attribute__((visibility("default"))) const char* rfir_mrpt_plugin_libraries()
-{
+extern "C" __attribute__((visibility("default"))) const char*
+rfir_mrpt_plugin_libraries() {
     return RFIR_PLUGIN_LIBS;
 }

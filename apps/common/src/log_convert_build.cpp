@@ -11,39 +11,35 @@
 #include <cmath>
 #include <cstring>
 
-namespace rfir::common
-{
+namespace rfir::common {
 using namespace rfir::obs;
 
-TLogFileKind logFileKind(const std::string& path)
-{
+TLogFileKind logFileKind(const std::string& path) {
     std::string low;
     for (char c : path) low += char(std::tolower(static_cast<unsigned char>(c)));
     const auto ends = [&](const std::string& e) {
-        return low.size() > e.size() && low.compare(low.size() - e.size(), e.size(), e) == 0;
+        return low.size() > e.size() &&
+               low.compare(low.size() - e.size(), e.size(), e) == 0;
     };
     if (ends(".txt")) return TLogFileKind::Text;
     if (ends(".rawlog")) return TLogFileKind::Rawlog;
     return TLogFileKind::Other;
 }
 
-mrpt::poses::CPose2D exactPose(double x, double y, double phi)
-{
+mrpt::poses::CPose2D exactPose(double x, double y, double phi) {
     mrpt::poses::CPose2D p(x, y, 0);
     p.phi(phi);
     return p;
 }
 
-std::optional<mrpt::Clock::time_point> timestampFromT(double t)
-{
+std::optional<mrpt::Clock::time_point> timestampFromT(double t) {
     // MRPT's fromDouble converts through an unsigned tick count: negative or
     // huge times would wrap around.
     if (!(t >= 0 && t < 1e11)) return std::nullopt;
     return mrpt::Clock::fromDouble(t);
 }
 
-std::optional<std::string> formatTimestamp(mrpt::Clock::time_point ts)
-{
+std::optional<std::string> formatTimestamp(mrpt::Clock::time_point ts) {
     // fromDouble truncates t * 1e7 to whole ticks, so the double nearest to
     // the tick may land on the tick below: try its neighbours too, then keep
     // the fewest digits that still give back this very tick.
@@ -54,11 +50,10 @@ std::optional<std::string> formatTimestamp(mrpt::Clock::time_point ts)
     cand[3] = std::nextafter(d0, -1e300);
     cand[4] = std::nextafter(cand[2], 1e300);
     for (int p = 1; p <= 17; p++)
-        for (double d : cand)
-        {
+        for (double d : cand) {
             char buf[64];
-            const auto r = std::to_chars(buf, buf + sizeof(buf), d,
-                                         std::chars_format::general, p);
+            const auto r =
+                std::to_chars(buf, buf + sizeof(buf), d, std::chars_format::general, p);
             const std::string s(buf, r.ptr);
             const auto back = parseDecimal(s);
             if (!back) continue;
@@ -69,8 +64,7 @@ std::optional<std::string> formatTimestamp(mrpt::Clock::time_point ts)
 }
 
 CObservationLogHeader toLogHeader(const TTextLogHeader& h,
-                                  const std::vector<std::string>& landmarks, double t0)
-{
+                                  const std::vector<std::string>& landmarks, double t0) {
     CObservationLogHeader o;
     o.sensorLabel = "HEADER";
     // CObservation's constructor stamps the current time: replace it.
@@ -83,8 +77,7 @@ CObservationLogHeader toLogHeader(const TTextLogHeader& h,
     return o;
 }
 
-TTextLogHeader fromLogHeader(const CObservationLogHeader& o)
-{
+TTextLogHeader fromLogHeader(const CObservationLogHeader& o) {
     TTextLogHeader h;
     h.readers = o.readers;
     h.receivers = o.receivers;
@@ -97,34 +90,28 @@ TTextLogHeader fromLogHeader(const CObservationLogHeader& o)
 
 CInstantBuilder::CInstantBuilder(const CObservationLogHeader& hdr,
                                  const rfir::ir::TDecoderParams& decoder)
-    : hdr_(hdr), decoder_(decoder)
-{
+    : hdr_(hdr), decoder_(decoder) {
     for (size_t i = 0; i < hdr_.rbLandmarkNames.size(); i++)
         landmarkIds_.emplace(hdr_.rbLandmarkNames[i], int32_t(i));
 }
 
-int32_t CInstantBuilder::landmarkId(const std::string& name) const
-{
+int32_t CInstantBuilder::landmarkId(const std::string& name) const {
     const auto it = landmarkIds_.find(name);
     return it == landmarkIds_.end() ? -1 : it->second;
 }
 
-namespace
-{
+namespace {
 template <class T>
-const T* findById(const std::vector<T>& v, const std::string& id)
-{
+const T* findById(const std::vector<T>& v, const std::string& id) {
     for (const auto& e : v)
         if (e.id == id) return &e;
     return nullptr;
 }
 
 void addRb(const TTimedRecord& r, const CObservationLogHeader& hdr, int32_t lmId,
-           mrpt::obs::CObservationBearingRange::Ptr& rb)
-{
+           mrpt::obs::CObservationBearingRange::Ptr& rb) {
     if (!hdr.rbSensor) throw std::runtime_error("rb record without an rb_sensor header");
-    if (!rb)
-    {
+    if (!rb) {
         const auto& s = *hdr.rbSensor;
         rb = mrpt::obs::CObservationBearingRange::Create();
         rb->sensorLabel = "RB";
@@ -145,47 +132,39 @@ void addRb(const TTimedRecord& r, const CObservationLogHeader& hdr, int32_t lmId
 
 void CInstantBuilder::build(const std::vector<TTimedRecord>& recs,
                             std::optional<mrpt::poses::CPose2D>& odometry,
-                            std::vector<mrpt::obs::CObservation::Ptr>& obs) const
-{
+                            std::vector<mrpt::obs::CObservation::Ptr>& obs) const {
     using K = TTimedRecord::Kind;
     odometry.reset();
     obs.clear();
     CObservationRFIDReaders::Ptr rfid;
     CObservationIRSignals::Ptr ir;
     mrpt::obs::CObservationBearingRange::Ptr rb;
-    for (const auto& r : recs)
-    {
-        const std::string where = "record '" + std::string(kindName(r.kind)) + " " + r.id + "'";
-        if (r.kind == K::Odom) odometry = exactPose(r.x, r.y, r.phi);
-        else if (r.kind == K::Rfid)
-        {
+    for (const auto& r : recs) {
+        const std::string where =
+            "record '" + std::string(kindName(r.kind)) + " " + r.id + "'";
+        if (r.kind == K::Odom)
+            odometry = exactPose(r.x, r.y, r.phi);
+        else if (r.kind == K::Rfid) {
             const auto* rd = findById(hdr_.readers, r.id);
             if (!rd) throw std::runtime_error(where + ": undeclared reader");
-            if (!rfid)
-            {
+            if (!rfid) {
                 rfid = CObservationRFIDReaders::Create();
                 rfid->sensorLabel = "RFID";
             }
             rfid->readings.push_back({*rd, r.tags});
-        }
-        else if (r.kind == K::Ir || r.kind == K::IrRaw)
-        {
+        } else if (r.kind == K::Ir || r.kind == K::IrRaw) {
             const auto* rc = findById(hdr_.receivers, r.id);
             if (!rc) throw std::runtime_error(where + ": undeclared receiver");
-            if (!ir)
-            {
+            if (!ir) {
                 ir = CObservationIRSignals::Create();
                 ir->sensorLabel = "IR";
             }
             CObservationIRSignals::TReading rd;
             rd.receiver = *rc;
-            if (r.kind == K::Ir)
-            {
+            if (r.kind == K::Ir) {
                 rd.codes = r.codes;
                 rd.volts = r.volts;
-            }
-            else
-            {
+            } else {
                 const auto dec = rfir::ir::decodeIRWindow(r.samples, r.rateHz, decoder_);
                 rd.codes = dec.codes;
                 rd.volts = dec.volts;
@@ -193,8 +172,8 @@ void CInstantBuilder::build(const std::vector<TTimedRecord>& recs,
                 rd.raw = r.samples;
             }
             ir->readings.push_back(std::move(rd));
-        }
-        else addRb(r, hdr_, landmarkId(r.id), rb);
+        } else
+            addRb(r, hdr_, landmarkId(r.id), rb);
     }
     std::optional<mrpt::Clock::time_point> ts;
     if (!recs.empty() && !(ts = timestampFromT(recs[0].t)))
@@ -207,8 +186,7 @@ void CInstantBuilder::build(const std::vector<TTimedRecord>& recs,
 }
 
 bool sameSerialization(const mrpt::serialization::CSerializable& a,
-                       const mrpt::serialization::CSerializable& b)
-{
+                       const mrpt::serialization::CSerializable& b) {
     mrpt::io::CMemoryStream sa, sb;
     auto aa = mrpt::serialization::archiveFrom(sa);
     auto ab = mrpt::serialization::archiveFrom(sb);

@@ -14,35 +14,29 @@
 #include <ostream>
 #include <sstream>
 
-namespace rfir::common
-{
+namespace rfir::common {
 using namespace rfir::obs;
 using mrpt::obs::CObservation;
 using mrpt::obs::CObservationBearingRange;
 using mrpt::obs::CObservationOdometry;
 
-namespace
-{
+namespace {
 /** An angle as the text wants it, in (-pi, pi]. */
 template <class T>
-T textAngle(T a)
-{
+T textAngle(T a) {
     if (a > T(-M_PI) && a <= T(M_PI)) return a;
     a = mrpt::math::wrapToPi(a);
     if (!(a > T(-M_PI))) a = std::nextafter(T(M_PI), T(0));
     return a;
 }
 
-class CRawToText
-{
-public:
+class CRawToText {
+  public:
     CRawToText(const std::string& in, const std::string& out, const TConvertOptions& o)
-        : in_(in), opts_(o), vp_(out + " (as written)")
-    {
-    }
+        : in_(in), opts_(o), vp_(out + " (as written)") {}
     TConvertReport run(std::ostream& out, size_t expectedInstants);
 
-private:
+  private:
     void lossy(const std::string& what);
     std::string validLine(const TTimedRecord& r);
     void timeOf(const CObservation& o, double& t);
@@ -65,8 +59,7 @@ private:
     size_t flagged_ = 0;
 };
 
-void CRawToText::lossy(const std::string& what)
-{
+void CRawToText::lossy(const std::string& what) {
     if (!opts_.lossy)
         throw std::runtime_error(in_ + ": instant " + std::to_string(instant_) + " (t " +
                                  tText_ + "): " + what +
@@ -76,60 +69,52 @@ void CRawToText::lossy(const std::string& what)
     flagged_++;
 }
 
-std::string CRawToText::validLine(const TTimedRecord& r)
-{
+std::string CRawToText::validLine(const TTimedRecord& r) {
     std::ostringstream s;
     writeTimedRecord(s, r);
     std::string line = s.str();
     TTimedRecord back;
-    try
-    {
+    try {
         vp_.parseLine(line.substr(0, line.size() - 1), ++line_, back);
-    }
-    catch (const TextLogError& e)
-    {
-        throw std::runtime_error(in_ + ": instant " + std::to_string(instant_) +
-                                 ": would write an invalid text log line: " + e.message());
+    } catch (const TextLogError& e) {
+        throw std::runtime_error(
+            in_ + ": instant " + std::to_string(instant_) +
+            ": would write an invalid text log line: " + e.message());
     }
     rep_.timedRecords++;
     return line;
 }
 
-void CRawToText::timeOf(const CObservation& o, double& t)
-{
+void CRawToText::timeOf(const CObservation& o, double& t) {
     const auto s = formatTimestamp(o.timestamp);
     tText_ = s ? *s : formatNumber(mrpt::Clock::toDouble(o.timestamp));
     if (!s)
-        lossy(o.timestamp == mrpt::Clock::time_point()
-                  ? "observation without a timestamp"
-                  : "timestamp that no decimal t maps to exactly (not made from a double)");
+        lossy(
+            o.timestamp == mrpt::Clock::time_point()
+                ? "observation without a timestamp"
+                : "timestamp that no decimal t maps to exactly (not made from a double)");
     t = *parseDecimal(tText_);
 }
 
 void CRawToText::recordsOfIR(const CObservationIRSignals& o, TTimedRecord& r,
-                             std::vector<TTimedRecord>& v)
-{
+                             std::vector<TTimedRecord>& v) {
     if (o.readings.empty()) lossy("IR observation with no receiver");
-    for (const auto& rd : o.readings)
-    {
+    for (const auto& rd : o.readings) {
         r.id = rd.receiver.id;
-        if (rd.hasRaw())
-        {
+        if (rd.hasRaw()) {
             r.kind = TTimedRecord::Kind::IrRaw;
             r.rateHz = rd.rateHz;
             r.samples = rd.raw;
             const auto dec = rfir::ir::decodeIRWindow(rd.raw, rd.rateHz, opts_.decoder);
             if (dec.codes != rd.codes || dec.volts != rd.volts)
-                lossy("ir_raw reading whose stored codes/volts differ from its decoded window");
-        }
-        else if (!rd.codes.empty())
-        {
+                lossy(
+                    "ir_raw reading whose stored codes/volts differ from its decoded "
+                    "window");
+        } else if (!rd.codes.empty()) {
             r.kind = TTimedRecord::Kind::Ir;
             r.codes = rd.codes;
             r.volts = rd.volts;
-        }
-        else
-        {
+        } else {
             lossy("IR reading with no code and no raw window (nothing in view)");
             continue;
         }
@@ -138,12 +123,10 @@ void CRawToText::recordsOfIR(const CObservationIRSignals& o, TTimedRecord& r,
 }
 
 void CRawToText::recordsOfRB(const CObservationBearingRange& o, TTimedRecord& r,
-                             std::vector<TTimedRecord>& v)
-{
+                             std::vector<TTimedRecord>& v) {
     const auto& names = builder_->header().rbLandmarkNames;
     if (o.sensedData.empty()) lossy("range-bearing observation with no measurement");
-    for (const auto& m : o.sensedData)
-    {
+    for (const auto& m : o.sensedData) {
         r.kind = TTimedRecord::Kind::Rb;
         if (m.landmarkID < 0 || size_t(m.landmarkID) >= names.size())
             lossy("range-bearing landmark ID outside the header's name table");
@@ -157,31 +140,25 @@ void CRawToText::recordsOfRB(const CObservationBearingRange& o, TTimedRecord& r,
     }
 }
 
-std::vector<TTimedRecord> CRawToText::recordsOf(const CObservation& o, double t)
-{
+std::vector<TTimedRecord> CRawToText::recordsOf(const CObservation& o, double t) {
     std::vector<TTimedRecord> v;
     TTimedRecord r;
     r.t = t;
-    if (auto od = dynamic_cast<const CObservationOdometry*>(&o))
-    {
+    if (auto od = dynamic_cast<const CObservationOdometry*>(&o)) {
         r.kind = TTimedRecord::Kind::Odom;
         r.x = od->odometry.x();
         r.y = od->odometry.y();
         r.phi = textAngle(od->odometry.phi());
         v.push_back(r);
-    }
-    else if (auto rf = dynamic_cast<const CObservationRFIDReaders*>(&o))
-    {
+    } else if (auto rf = dynamic_cast<const CObservationRFIDReaders*>(&o)) {
         if (rf->readings.empty()) lossy("RFID observation with no reader");
-        for (const auto& rd : rf->readings)
-        {
+        for (const auto& rd : rf->readings) {
             r.kind = TTimedRecord::Kind::Rfid;
             r.id = rd.reader.id;
             r.tags = rd.tags;
             v.push_back(r);
         }
-    }
-    else if (auto ir = dynamic_cast<const CObservationIRSignals*>(&o))
+    } else if (auto ir = dynamic_cast<const CObservationIRSignals*>(&o))
         recordsOfIR(*ir, r, v);
     else if (auto rb = dynamic_cast<const CObservationBearingRange*>(&o))
         recordsOfRB(*rb, r, v);
@@ -190,24 +167,20 @@ std::vector<TTimedRecord> CRawToText::recordsOf(const CObservation& o, double t)
     return v;
 }
 
-void CRawToText::checkRebuilt(const CObservation& o, const std::vector<TTimedRecord>& recs)
-{
+void CRawToText::checkRebuilt(const CObservation& o,
+                              const std::vector<TTimedRecord>& recs) {
     std::optional<mrpt::poses::CPose2D> odom;
     std::vector<CObservation::Ptr> obs;
     if (recs.empty()) return;
-    try
-    {
+    try {
         builder_->build(recs, odom, obs);
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         lossy(std::string(o.GetRuntimeClass()->className) + " that cannot be rebuilt (" +
               e.what() + ")");
         return;
     }
     CObservation::Ptr re = obs.empty() ? nullptr : obs.front();
-    if (odom)
-    {
+    if (odom) {
         auto od = CObservationOdometry::Create();
         od->sensorLabel = "ODOMETRY";
         od->timestamp = *timestampFromT(recs.front().t);
@@ -220,15 +193,13 @@ void CRawToText::checkRebuilt(const CObservation& o, const std::vector<TTimedRec
               "from the header, noise parameters, pitch, an angle outside (-pi, pi])");
 }
 
-void CRawToText::convertFrame(std::ostream& out, const TRawlogStep& st)
-{
+void CRawToText::convertFrame(std::ostream& out, const TRawlogStep& st) {
     std::map<std::string, int> perClass;
     if (st.sf->size() == 0)
         lossy(st.action && st.action->getBestMovementEstimation()
                   ? "odometry increment without an odometry pose"
                   : "empty sensing instant");
-    for (const auto& o : *st.sf)
-    {
+    for (const auto& o : *st.sf) {
         const std::string cls = o->GetRuntimeClass()->className;
         if (++perClass[cls] == 2) lossy("several " + cls + " in one instant");
         const size_t flagged = flagged_;
@@ -244,8 +215,7 @@ void CRawToText::convertFrame(std::ostream& out, const TRawlogStep& st)
     }
 }
 
-TConvertReport CRawToText::run(std::ostream& out, size_t expected)
-{
+TConvertReport CRawToText::run(std::ostream& out, size_t expected) {
     CRawlogReader rd(in_);
     const auto& hdr = rd.header();
     const TTextLogHeader th = fromLogHeader(hdr);
@@ -259,23 +229,20 @@ TConvertReport CRawToText::run(std::ostream& out, size_t expected)
     writeTextLogHeader(hs, th);
     std::istringstream hl(hs.str());
     TTimedRecord dummy;
-    for (std::string l; std::getline(hl, l);)
-    {
-        try
-        {
+    for (std::string l; std::getline(hl, l);) {
+        try {
             vp_.parseLine(l, ++line_, dummy);
-        }
-        catch (const TextLogError& e)
-        {
-            throw std::runtime_error(in_ + ": log header: would write an invalid text log "
-                                     "line: " + e.message());
+        } catch (const TextLogError& e) {
+            throw std::runtime_error(in_ +
+                                     ": log header: would write an invalid text log "
+                                     "line: " +
+                                     e.message());
         }
     }
     out << hs.str();
     builder_ = std::make_unique<CInstantBuilder>(hdr, opts_.decoder);
     TRawlogStep st;
-    for (instant_ = 1; rd.next(st); instant_++)
-    {
+    for (instant_ = 1; rd.next(st); instant_++) {
         convertFrame(out, st);
         rep_.instants++;
         if (opts_.progress && expected > 20000 && instant_ % (expected / 10) == 0)
@@ -290,15 +257,13 @@ TConvertReport CRawToText::run(std::ostream& out, size_t expected)
 }  // namespace
 
 TConvertReport convertRawlogToTextLog(const std::string& in, const std::string& out,
-                                      const TConvertOptions& opts)
-{
+                                      const TConvertOptions& opts) {
     // First pass: everything is checked and nothing is written.
     std::ostream nowhere(nullptr);
     const size_t n = CRawToText(in, out, opts).run(nowhere, 0).instants;
     TConvertReport rep;
-    writeFileAtomically(out, [&](std::ostream& o) {
-        rep = CRawToText(in, out, opts).run(o, n);
-    });
+    writeFileAtomically(
+        out, [&](std::ostream& o) { rep = CRawToText(in, out, opts).run(o, n); });
     return rep;
 }
 

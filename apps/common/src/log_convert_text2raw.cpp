@@ -8,20 +8,14 @@
 #include <ostream>
 #include <unordered_map>
 
-namespace rfir::common
-{
-namespace
-{
+namespace rfir::common {
+namespace {
 /** Progress to a stream in 10 % steps, only for inputs over 1 MB. */
-class CProgress
-{
-public:
+class CProgress {
+  public:
     CProgress(std::ostream* o, std::string what, uint64_t total)
-        : o_(total > (1u << 20) ? o : nullptr), what_(std::move(what)), total_(total)
-    {
-    }
-    void update(uint64_t done)
-    {
+        : o_(total > (1u << 20) ? o : nullptr), what_(std::move(what)), total_(total) {}
+    void update(uint64_t done) {
         if (!o_) return;
         const unsigned pct = unsigned(std::min<uint64_t>(100, done * 100 / total_));
         if (pct < next_) return;
@@ -29,7 +23,7 @@ public:
         next_ = pct / 10 * 10 + 10;
     }
 
-private:
+  private:
     std::ostream* o_;
     std::string what_;
     uint64_t total_;
@@ -39,8 +33,7 @@ private:
 /** Reads the text log line by line through a fresh parser. */
 template <class OnRecord>
 void forEachRecord(const std::string& path, const TConvertOptions& opts,
-                   const std::string& what, CTextLogParser& p, OnRecord&& onRecord)
-{
+                   const std::string& what, CTextLogParser& p, OnRecord&& onRecord) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw std::runtime_error(path + ": cannot open text log");
     f.seekg(0, std::ios::end);
@@ -51,8 +44,7 @@ void forEachRecord(const std::string& path, const TConvertOptions& opts,
     size_t n = 0;
     uint64_t done = 0;
     TTimedRecord rec;
-    while (std::getline(f, line))
-    {
+    while (std::getline(f, line)) {
         if (p.parseLine(line, ++n, rec)) onRecord(rec);
         done += line.size() + 1;
         prog.update(done);
@@ -63,8 +55,7 @@ void forEachRecord(const std::string& path, const TConvertOptions& opts,
 }
 
 /** What the first pass learns. */
-struct TChecked
-{
+struct TChecked {
     TTextLogHeader header;
     std::vector<std::string> landmarks;  //!< rb IDs, in order of first use
     size_t records = 0, instants = 0;
@@ -72,8 +63,7 @@ struct TChecked
 };
 
 /** Rules of the rawlog on top of the text format's own. */
-TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
-{
+TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts) {
     CTextLogParser p(path);
     TChecked c;
     std::unordered_map<std::string, size_t> seen, atThisT;
@@ -81,13 +71,14 @@ TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
     mrpt::Clock::time_point prevTs;
     size_t prevLine = 0;
     forEachRecord(path, opts, "checking", p, [&](const TTimedRecord& r) {
-        const auto fail = [&](const std::string& m) { throw TextLogError(path, r.line, m); };
+        const auto fail = [&](const std::string& m) {
+            throw TextLogError(path, r.line, m);
+        };
         const auto ts = timestampFromT(r.t);
         if (!ts)
             fail("t " + formatNumber(r.t) +
                  " cannot be an MRPT timestamp (t must be in [0, 1e11) seconds)");
-        if (!prevT || r.t != *prevT)
-        {
+        if (!prevT || r.t != *prevT) {
             if (prevT && *ts == prevTs)
                 fail("t " + formatNumber(r.t) + " and the previous instant's t " +
                      formatNumber(*prevT) + " (line " + std::to_string(prevLine) +
@@ -101,13 +92,12 @@ TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
         if (r.kind == TTimedRecord::Kind::IrRaw && r.samples.size() < 16)
             fail("ir_raw window of " + std::to_string(r.samples.size()) +
                  " samples is too short to decode (at least 16)");
-        if (r.kind == TTimedRecord::Kind::Rb)
-        {
+        if (r.kind == TTimedRecord::Kind::Rb) {
             // MRPT refuses to serialize two measurements of one landmark in
             // one CObservationBearingRange.
             if (auto [it, isNew] = atThisT.emplace(r.id, r.line); !isNew)
-                fail("landmark '" + r.id + "' is measured twice at t " + formatNumber(r.t) +
-                     " (first at line " + std::to_string(it->second) +
+                fail("landmark '" + r.id + "' is measured twice at t " +
+                     formatNumber(r.t) + " (first at line " + std::to_string(it->second) +
                      "): an MRPT range-bearing observation holds one measurement per "
                      "landmark");
             if (seen.emplace(r.id, seen.size()).second) c.landmarks.push_back(r.id);
@@ -120,8 +110,7 @@ TChecked checkForRawlog(const std::string& path, const TConvertOptions& opts)
 }  // namespace
 
 TConvertReport convertTextLogToRawlog(const std::string& in, const std::string& out,
-                                      const TConvertOptions& opts)
-{
+                                      const TConvertOptions& opts) {
     const TChecked c = checkForRawlog(in, opts);
     const auto hdr = toLogHeader(c.header, c.landmarks, c.firstT);
     const CInstantBuilder builder(hdr, opts.decoder);
@@ -131,12 +120,9 @@ TConvertReport convertTextLogToRawlog(const std::string& in, const std::string& 
     std::vector<mrpt::obs::CObservation::Ptr> obs;
     const auto flush = [&]() {
         if (instant.empty()) return;
-        try
-        {
+        try {
             builder.build(instant, odom, obs);
-        }
-        catch (const std::exception& e)
-        {
+        } catch (const std::exception& e) {
             throw TextLogError(in, instant.front().line, e.what());
         }
         w.writeStep(instant.front().t, odom, obs);

@@ -8,17 +8,13 @@
 #include <fstream>
 #include <sstream>
 
-namespace rfir::common
-{
-namespace
-{
-std::vector<std::string> tokenize(const std::string& line)
-{
+namespace rfir::common {
+namespace {
+std::vector<std::string> tokenize(const std::string& line) {
     std::vector<std::string> tok;
     const size_t end = std::min(line.find('#'), line.size());
     size_t i = 0;
-    while (i < end)
-    {
+    while (i < end) {
         while (i < end && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) i++;
         size_t j = i;
         while (j < end && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') j++;
@@ -28,32 +24,27 @@ std::vector<std::string> tokenize(const std::string& line)
     return tok;
 }
 
-bool isHeaderKind(const std::string& k)
-{
+bool isHeaderKind(const std::string& k) {
     return k == "reader" || k == "receiver" || k == "rb_sensor" || k == "start";
 }
 
-std::string quoted(const std::string& s)
-{
+std::string quoted(const std::string& s) {
     return "'" + (s.size() > 80 ? s.substr(0, 77) + "..." : s) + "'";
 }
 }  // namespace
 
-void CTextLogParser::fail(const std::string& msg) const
-{
+void CTextLogParser::fail(const std::string& msg) const {
     throw TextLogError(file_, line_, msg);
 }
 
 void CTextLogParser::checkFieldCount(const std::vector<std::string>& tok, size_t n,
-                                     const char* fields) const
-{
+                                     const char* fields) const {
     if (tok.size() != n + 1)
         fail("'" + tok[0] + "' takes " + std::to_string(n) + " fields (" + fields +
              "), got " + std::to_string(tok.size() - 1));
 }
 
-double CTextLogParser::number(const std::string& tok, const char* what) const
-{
+double CTextLogParser::number(const std::string& tok, const char* what) const {
     if (const auto v = parseDecimal(tok)) return *v;
     std::string low;
     for (char c : tok) low += char(std::tolower(static_cast<unsigned char>(c)));
@@ -63,15 +54,13 @@ double CTextLogParser::number(const std::string& tok, const char* what) const
     fail(std::string(what) + " " + quoted(tok) + " is not a finite decimal number");
 }
 
-double CTextLogParser::positive(const std::string& tok, const char* what) const
-{
+double CTextLogParser::positive(const std::string& tok, const char* what) const {
     const double v = number(tok, what);
     if (!(v > 0)) fail(std::string(what) + " must be > 0, got " + tok);
     return v;
 }
 
-double CTextLogParser::angle(const std::string& tok, const char* what) const
-{
+double CTextLogParser::angle(const std::string& tok, const char* what) const {
     const double v = number(tok, what);
     if (!(v > -M_PI && v <= M_PI))
         fail(std::string(what) + " must be an angle in (-pi, pi] radians, got " + tok);
@@ -79,8 +68,7 @@ double CTextLogParser::angle(const std::string& tok, const char* what) const
 }
 
 float CTextLogParser::floatField(const std::string& tok, const char* what,
-                                 bool isAngle) const
-{
+                                 bool isAngle) const {
     // The range check is on the written value; the stored float is the
     // decimal's own nearest float (not a double rounded twice).
     isAngle ? angle(tok, what) : positive(tok, what);
@@ -92,8 +80,7 @@ float CTextLogParser::floatField(const std::string& tok, const char* what,
     return v;
 }
 
-std::string CTextLogParser::id(const std::string& tok, const char* what) const
-{
+std::string CTextLogParser::id(const std::string& tok, const char* what) const {
     if (tok.size() > 64)
         fail(std::string(what) + " " + quoted(tok) + " is longer than 64 characters");
     if (!isValidId(tok))
@@ -102,13 +89,14 @@ std::string CTextLogParser::id(const std::string& tok, const char* what) const
     return tok;
 }
 
-bool CTextLogParser::parseLine(const std::string& line, size_t lineNo, TTimedRecord& rec)
-{
+bool CTextLogParser::parseLine(const std::string& line, size_t lineNo,
+                               TTimedRecord& rec) {
     line_ = lineNo;
     const auto tok = tokenize(line);
     if (tok.empty()) return false;
-    if (!sawFormat_)
-    {
+    if (!sawFormat_) {
+        if (tok[0].rfind("\xEF\xBB\xBF", 0) == 0)
+            fail("the file starts with a UTF-8 byte order mark: save it without one");
         if (tok[0] != "format" || tok.size() < 2 || tok[1] != "textlog")
             fail("the first record must be 'format textlog 1', got " +
                  quoted(tok[0] + (tok.size() > 1 ? " " + tok[1] : "")));
@@ -119,8 +107,7 @@ bool CTextLogParser::parseLine(const std::string& line, size_t lineNo, TTimedRec
         return false;
     }
     if (tok[0] == "format") fail("'format' may appear only once, as the first record");
-    if (isHeaderKind(tok[0]))
-    {
+    if (isHeaderKind(tok[0])) {
         if (firstTimedLine_)
             fail("header record '" + tok[0] + "' after the first timed record (line " +
                  std::to_string(firstTimedLine_) + "): header records come first");
@@ -128,8 +115,7 @@ bool CTextLogParser::parseLine(const std::string& line, size_t lineNo, TTimedRec
         return false;
     }
     if (tok[0] == "odom" || tok[0] == "rfid" || tok[0] == "ir" || tok[0] == "ir_raw" ||
-        tok[0] == "rb")
-    {
+        tok[0] == "rb") {
         parseTimed(tok, rec);
         return true;
     }
@@ -137,16 +123,14 @@ bool CTextLogParser::parseLine(const std::string& line, size_t lineNo, TTimedRec
          " (expected reader, receiver, rb_sensor, start, odom, rfid, ir, ir_raw or rb)");
 }
 
-void CTextLogParser::parseHeader(const std::vector<std::string>& tok)
-{
+void CTextLogParser::parseHeader(const std::vector<std::string>& tok) {
     using rfir::obs::TIRReceiver;
     using rfir::obs::TRFIDReader;
     const auto dup = [&](const std::string& what, size_t first) {
         fail("duplicate " + what + " (first declared at line " + std::to_string(first) +
              ")");
     };
-    if (tok[0] == "reader")
-    {
+    if (tok[0] == "reader") {
         checkFieldCount(tok, 5, "<reader_id> <x> <y> <half_x> <half_y>");
         TRFIDReader r;
         r.id = id(tok[1], "reader_id");
@@ -158,9 +142,7 @@ void CTextLogParser::parseHeader(const std::vector<std::string>& tok)
             dup("reader ID '" + r.id + "'", it->second);
         readerLines_[r.id] = line_;
         header_.readers.push_back(r);
-    }
-    else if (tok[0] == "receiver")
-    {
+    } else if (tok[0] == "receiver") {
         checkFieldCount(tok, 4, "<receiver_id> <x> <y> <z>");
         TIRReceiver r;
         r.id = id(tok[1], "receiver_id");
@@ -171,9 +153,7 @@ void CTextLogParser::parseHeader(const std::vector<std::string>& tok)
             dup("receiver ID '" + r.id + "'", it->second);
         receiverLines_[r.id] = line_;
         header_.receivers.push_back(r);
-    }
-    else if (tok[0] == "rb_sensor")
-    {
+    } else if (tok[0] == "rb_sensor") {
         checkFieldCount(tok, 5, "<x> <y> <yaw> <max_range> <fov>");
         rfir::obs::TRBSensor s;
         s.x = number(tok[1], "x");
@@ -186,8 +166,7 @@ void CTextLogParser::parseHeader(const std::vector<std::string>& tok)
         if (rbSensorLine_) dup("'rb_sensor' record", rbSensorLine_);
         rbSensorLine_ = line_;
         header_.rbSensor = s;
-    }
-    else  // start
+    } else  // start
     {
         checkFieldCount(tok, 3, "<x> <y> <phi>");
         TTextLogHeader::TStart s;
@@ -200,41 +179,39 @@ void CTextLogParser::parseHeader(const std::vector<std::string>& tok)
     }
 }
 
-void CTextLogParser::parseTimed(const std::vector<std::string>& tok, TTimedRecord& r)
-{
+void CTextLogParser::parseTimed(const std::vector<std::string>& tok, TTimedRecord& r) {
     using K = TTimedRecord::Kind;
     r = TTimedRecord();
     r.line = line_;
     const std::string& k = tok[0];
-    if (k == "odom") checkFieldCount(tok, 4, "<t> <x> <y> <phi>");
-    else if (k == "rfid")
-    {
+    if (k == "odom")
+        checkFieldCount(tok, 4, "<t> <x> <y> <phi>");
+    else if (k == "rfid") {
         if (tok.size() < 3)
             fail("'rfid' takes at least 2 fields (<t> <reader_id> [<tag_id> ...]), got " +
                  std::to_string(tok.size() - 1));
-    }
-    else if (k == "ir") checkFieldCount(tok, 4, "<t> <receiver_id> <codes> <volts>");
-    else if (k == "ir_raw") checkFieldCount(tok, 4, "<t> <receiver_id> <rate_hz> <v1,v2,...>");
-    else checkFieldCount(tok, 4, "<t> <landmark_id> <range> <bearing>");
+    } else if (k == "ir")
+        checkFieldCount(tok, 4, "<t> <receiver_id> <codes> <volts>");
+    else if (k == "ir_raw")
+        checkFieldCount(tok, 4, "<t> <receiver_id> <rate_hz> <v1,v2,...>");
+    else
+        checkFieldCount(tok, 4, "<t> <landmark_id> <range> <bearing>");
     r.t = number(tok[1], "t");
-    if (k == "odom")
-    {
+    if (k == "odom") {
         r.kind = K::Odom;
         r.x = number(tok[2], "x");
         r.y = number(tok[3], "y");
         r.phi = angle(tok[4], "phi");
-    }
-    else if (k == "rfid")
-    {
+    } else if (k == "rfid") {
         r.kind = K::Rfid;
         r.id = id(tok[2], "reader_id");
         if (!header_.findReader(r.id))
-            fail("rfid names reader '" + r.id + "', which no 'reader' header record declares");
+            fail("rfid names reader '" + r.id +
+                 "', which no 'reader' header record declares");
         for (size_t i = 3; i < tok.size(); i++) r.tags.push_back(id(tok[i], "tag_id"));
-    }
-    else if (k == "ir" || k == "ir_raw") parseIr(tok, r);
-    else
-    {
+    } else if (k == "ir" || k == "ir_raw")
+        parseIr(tok, r);
+    else {
         r.kind = K::Rb;
         if (!header_.rbSensor) fail("'rb' record without an 'rb_sensor' header record");
         r.id = id(tok[2], "landmark_id");
@@ -244,15 +221,13 @@ void CTextLogParser::parseTimed(const std::vector<std::string>& tok, TTimedRecor
     checkTime(tok[1], r);
 }
 
-void CTextLogParser::parseIr(const std::vector<std::string>& tok, TTimedRecord& r)
-{
+void CTextLogParser::parseIr(const std::vector<std::string>& tok, TTimedRecord& r) {
     const std::string& k = tok[0];
     r.id = id(tok[2], "receiver_id");
     if (!header_.findReceiver(r.id))
         fail(k + " names receiver '" + r.id +
              "', which no 'receiver' header record declares");
-    if (k == "ir")
-    {
+    if (k == "ir") {
         r.kind = TTimedRecord::Kind::Ir;
         const auto c = rfir::ir::parseCodeList(tok[3]);
         if (!c)
@@ -266,8 +241,7 @@ void CTextLogParser::parseIr(const std::vector<std::string>& tok, TTimedRecord& 
     r.rateHz = positive(tok[3], "rate_hz");
     const std::string& s = tok[4];
     size_t i = 0;
-    for (size_t n = 1;; n++)
-    {
+    for (size_t n = 1;; n++) {
         const size_t j = std::min(s.find(',', i), s.size());
         const auto v = parseDecimalFloat(s.substr(i, j - i));
         if (!v)
@@ -279,15 +253,13 @@ void CTextLogParser::parseIr(const std::vector<std::string>& tok, TTimedRecord& 
     }
 }
 
-void CTextLogParser::checkTime(const std::string& tokT, const TTimedRecord& r)
-{
+void CTextLogParser::checkTime(const std::string& tokT, const TTimedRecord& r) {
     if (firstTimedLine_ && r.t < lastT_)
         fail("t " + tokT + " is earlier than the previous record's t " +
              formatNumber(lastT_) + " (line " + std::to_string(lastTLine_) +
              "): timed records must be in non-decreasing time");
     if (!firstTimedLine_ || r.t != lastT_) odomLineAtT_ = 0;
-    if (r.kind == TTimedRecord::Kind::Odom)
-    {
+    if (r.kind == TTimedRecord::Kind::Odom) {
         if (odomLineAtT_)
             fail("second odom record at t " + tokT + " (first at line " +
                  std::to_string(odomLineAtT_) + "): one sensing instant has one pose");
@@ -298,15 +270,13 @@ void CTextLogParser::checkTime(const std::string& tokT, const TTimedRecord& r)
     lastTLine_ = line_;
 }
 
-void CTextLogParser::finish(size_t lastLineNo) const
-{
+void CTextLogParser::finish(size_t lastLineNo) const {
     if (!sawFormat_)
         throw TextLogError(file_, std::max<size_t>(lastLineNo, 1),
                            "empty text log: the first record must be 'format textlog 1'");
 }
 
-TTextLog readTextLog(std::istream& in, const std::string& name)
-{
+TTextLog readTextLog(std::istream& in, const std::string& name) {
     CTextLogParser p(name);
     TTextLog log;
     std::string line;
@@ -320,8 +290,7 @@ TTextLog readTextLog(std::istream& in, const std::string& name)
     return log;
 }
 
-TTextLog readTextLog(const std::string& path)
-{
+TTextLog readTextLog(const std::string& path) {
     std::ifstream f(path);
     if (!f) throw std::runtime_error(path + ": cannot open text log");
     return readTextLog(f, path);

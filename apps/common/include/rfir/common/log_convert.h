@@ -17,10 +17,8 @@
 #include <unordered_map>
 #include <vector>
 
-namespace rfir::common
-{
-struct TConvertOptions
-{
+namespace rfir::common {
+struct TConvertOptions {
     /** rawlog -> text only: write what textlog 1 can hold and count, in the
      * report, what it cannot (instead of failing on the first such item). */
     bool lossy = false;
@@ -30,8 +28,7 @@ struct TConvertOptions
     std::ostream* progress = nullptr;
 };
 
-struct TConvertReport
-{
+struct TConvertReport {
     size_t timedRecords = 0;  //!< text records read or written
     size_t instants = 0;      //!< rawlog sensing instants written or read
     /** lossy mode: what could not be written, and how many times. */
@@ -75,9 +72,8 @@ rfir::obs::CObservationLogHeader toLogHeader(const TTextLogHeader& h,
 TTextLogHeader fromLogHeader(const rfir::obs::CObservationLogHeader& h);
 
 /** Builds the observations of one sensing instant from its records. */
-class CInstantBuilder
-{
-public:
+class CInstantBuilder {
+  public:
     CInstantBuilder(const rfir::obs::CObservationLogHeader& hdr,
                     const rfir::ir::TDecoderParams& decoder);
     /** All records share one t. Observations in the layout's order: RFID, IR,
@@ -89,7 +85,7 @@ public:
     /** Landmark ID of a name; -1 if not in the header's table. */
     int32_t landmarkId(const std::string& name) const;
 
-private:
+  private:
     rfir::obs::CObservationLogHeader hdr_;
     rfir::ir::TDecoderParams decoder_;
     std::unordered_map<std::string, int32_t> landmarkIds_;

@@ -14,38 +14,33 @@
 #include <string>
 #include <vector>
 
-namespace rfir::common
-{
+namespace rfir::common {
 /** A malformed text log: what() is "FILE:LINE: what is wrong". */
-class TextLogError : public std::runtime_error
-{
-public:
+class TextLogError : public std::runtime_error {
+  public:
     TextLogError(const std::string& file, size_t line, const std::string& msg)
         : std::runtime_error(file + ":" + std::to_string(line) + ": " + msg),
-          file_(file), line_(line), msg_(msg)
-    {
-    }
+          file_(file),
+          line_(line),
+          msg_(msg) {}
     const std::string& file() const { return file_; }
     size_t line() const { return line_; }
     const std::string& message() const { return msg_; }
 
-private:
+  private:
     std::string file_;
     size_t line_;
     std::string msg_;
 };
 
 /** The header records: `reader`, `receiver`, `rb_sensor`, `start`. */
-struct TTextLogHeader
-{
+struct TTextLogHeader {
     std::vector<rfir::obs::TRFIDReader> readers;
     std::vector<rfir::obs::TIRReceiver> receivers;
     std::optional<rfir::obs::TRBSensor> rbSensor;
-    struct TStart
-    {
+    struct TStart {
         double x = 0, y = 0, phi = 0;
-        bool operator==(const TStart& o) const
-        {
+        bool operator==(const TStart& o) const {
             return x == o.x && y == o.y && phi == o.phi;
         }
     };
@@ -57,19 +52,18 @@ struct TTextLogHeader
 };
 
 /** One timed record. Only the fields of its kind are meaningful. */
-struct TTimedRecord
-{
+struct TTimedRecord {
     enum class Kind { Odom, Rfid, Ir, IrRaw, Rb };
     Kind kind = Kind::Odom;
     double t = 0;
-    size_t line = 0;  //!< source line (0 when built in memory)
-    std::string id;   //!< reader, receiver or landmark ID (not for odom)
-    double x = 0, y = 0, phi = 0;    //!< odom
-    std::vector<std::string> tags;   //!< rfid
-    std::vector<uint8_t> codes;      //!< ir
-    double volts = 0;                //!< ir
-    double rateHz = 0;               //!< ir_raw
-    std::vector<float> samples;      //!< ir_raw
+    size_t line = 0;                //!< source line (0 when built in memory)
+    std::string id;                 //!< reader, receiver or landmark ID (not for odom)
+    double x = 0, y = 0, phi = 0;   //!< odom
+    std::vector<std::string> tags;  //!< rfid
+    std::vector<uint8_t> codes;     //!< ir
+    double volts = 0;               //!< ir
+    double rateHz = 0;              //!< ir_raw
+    std::vector<float> samples;     //!< ir_raw
     /** rb: floats, as CObservationBearingRange stores them; a bearing within
      * float rounding of +-pi is rounded into (-pi, pi]. */
     float range = 0, bearing = 0;
@@ -80,8 +74,7 @@ struct TTimedRecord
 const char* kindName(TTimedRecord::Kind k);
 
 /** A whole text log in memory. */
-struct TTextLog
-{
+struct TTextLog {
     TTextLogHeader header;
     std::vector<TTimedRecord> records;
 };
@@ -89,9 +82,8 @@ struct TTextLog
 /** Parses a text log line by line, checking every rule of the format, and
  * throws TextLogError on the first malformed line. Keeps only the header and
  * the last time, so a huge log can be checked while streaming. */
-class CTextLogParser
-{
-public:
+class CTextLogParser {
+  public:
     explicit CTextLogParser(std::string fileName) : file_(std::move(fileName)) {}
 
     /** Parses line number `lineNo` (1-based). Returns true and fills `rec` for
@@ -104,7 +96,7 @@ public:
     const TTextLogHeader& header() const { return header_; }
     const std::string& fileName() const { return file_; }
 
-private:
+  private:
     [[noreturn]] void fail(const std::string& msg) const;
     void parseHeader(const std::vector<std::string>& tok);
     void parseTimed(const std::vector<std::string>& tok, TTimedRecord& rec);

@@ -47,6 +47,7 @@ TEST(Import, TextToRawlogFollowsTheLayout) {
     EXPECT_EQ(st.rb->sensedData[1].yaw, -0.85f);
     EXPECT_EQ(st.rb->sensedData[1].pitch, 0.f);
     EXPECT_EQ(st.rb->maxSensorDistance, 0.5f);
+    EXPECT_EQ(st.rb->fieldOfView_pitch, 0.f);
     EXPECT_EQ(st.rb->fieldOfView_yaw, float(2.0943951023931953));
     EXPECT_NEAR(st.rb->sensorLocationOnRobot.x(), 0.2, 1e-15);
     for (const auto& o : *st.sf) EXPECT_EQ(o->timestamp, mrpt::Clock::fromDouble(0));

@@ -140,6 +140,7 @@ inline void randomInstant(std::mt19937& rng, const rfir::obs::CObservationLogHea
     rb->sensorLocationOnRobot = mrpt::poses::CPose3D(s.x, s.y, 0, s.yaw, 0, 0);
     rb->maxSensorDistance = float(s.maxRange);
     rb->fieldOfView_yaw = float(s.fov);
+    rb->fieldOfView_pitch = 0;
     // Landmarks LM0..LM4 first appear at instants 0..4, in that order; MRPT
     // allows one measurement per landmark and observation.
     std::vector<int32_t> ids;

@@ -119,6 +119,7 @@ void addRb(const TTimedRecord& r, const CObservationLogHeader& hdr, int32_t lmId
         rb->minSensorDistance = 0;
         rb->maxSensorDistance = float(s.maxRange);
         rb->fieldOfView_yaw = float(s.fov);
+        rb->fieldOfView_pitch = 0;  // a planar sensor (as the simulator writes it)
     }
     mrpt::obs::CObservationBearingRange::TMeasurement m;
     m.range = r.range;

@@ -137,7 +137,7 @@ TEST(Import, TimestampsRoundTrip) {
     // MRPT's fromDouble truncates t * 1e7 to 100 ns ticks. A t with at most 6
     // decimals comes back digit for digit; any t comes back on its own tick.
     for (double t : {0.0, 1e-6, 0.1, 0.3, 12.345, 59.999999, 86400.000001, 1e6 + 0.5,
-                     123456.765432, 9999999.999999}) {
+                     123456.765432, 9999999.999999, 1700000000.123, 1700000000.123456}) {
         const auto ts = timestampFromT(t);
         ASSERT_TRUE(ts) << t;
         const auto s = formatTimestamp(*ts);

@@ -42,8 +42,9 @@ std::string sweepSection(const TRowResults& r) {
 std::string kidnapSection(const TRowResults& r) {
     std::ostringstream o;
     o << "Robot error [mm] before the kidnapping and from 15 s after the robot is put "
-         "down to the end; recovery: seconds from the put-down until the error stays "
-         "below 100 mm (mean over the seeds that recovered).\n\n"
+         "down to the end. A run has *recovered* when its error after is at most twice "
+         "its error before; recovery time: seconds from the put-down to the first error "
+         "below twice the error before (mean over the recovered seeds).\n\n"
          "| method | before | after | recovered (seeds) | recovery time [s] | sensor "
          "resettings | tags dt |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const auto& m : r.row.methods) {

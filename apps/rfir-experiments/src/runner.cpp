@@ -72,24 +72,25 @@ TMapEntry::Kind mapKind(const rfir::sim::TSimOutput& sim) {
                                                              : TMapEntry::Kind::Tag;
 }
 
-/** Error before the kidnapping, after it, and the time to get back below 0.1 m. */
+/** Error before the kidnapping, after it, and the time to get back to the
+ * accuracy of before (below twice the mean error before the kidnapping). */
 void kidnapMetrics(const rfir::sim::TSimConfig& cfg, TRunResult& r) {
     const double t0 = cfg.kidnap.time, tDown = t0 + cfg.kidnap.carryTime;
     const auto& pp = r.eval.robot->perPose;
     double sb = 0, sa = 0;
     size_t nb = 0, na = 0;
-    std::optional<double> lastBad;
     for (const auto& e : pp) {
         if (e.t < t0) sb += e.dist, nb++;
-        if (e.t > tDown + 15) sa += e.dist, na++;
-        if (e.t >= tDown && e.dist >= 0.1) lastBad = e.t;
+        if (e.t > tDown + kRecoveryWindow) sa += e.dist, na++;
     }
     if (nb) r.beforeKidnap = sb / double(nb);
     if (na) r.afterKidnap = sa / double(na);
-    if (!lastBad)
-        r.recoveryTime = 0;
-    else if (!pp.empty() && *lastBad < pp.back().t)
-        r.recoveryTime = *lastBad - tDown;
+    if (!nb || !na || r.afterKidnap > 2 * r.beforeKidnap) return;  // not recovered
+    for (const auto& e : pp)
+        if (e.t >= tDown && e.dist < 2 * r.beforeKidnap) {
+            r.recoveryTime = e.t - tDown;
+            break;
+        }
 }
 }  // namespace
 

@@ -15,6 +15,10 @@
 #include <vector>
 
 namespace rfir::experiments {
+/** Kidnap rows: the "after" error is measured from this many seconds after
+ * the robot is put down. */
+constexpr double kRecoveryWindow = 15.0;
+
 /** One method on one data set. */
 struct TRunResult {
     std::string method;  //!< TMethodSpec::label
@@ -24,9 +28,11 @@ struct TRunResult {
     double msPerStep = 0, maxStepMs = 0, totalSeconds = 0;
     size_t steps = 0, resets = 0;
     /** Kidnap rows: mean distance error before the kidnapping and from
-     * `recoveryWindow` seconds after the robot is put down to the end (m). */
+     * kRecoveryWindow seconds after the robot is put down to the end (m). */
     double beforeKidnap = kNaN, afterKidnap = kNaN;
-    /** Seconds from the put-down until the error stays below 0.1 m (NaN: never). */
+    /** Recovered (the error after is at most twice the error before): seconds
+     * from the put-down to the first error below twice the error before;
+     * NaN: not recovered. */
     double recoveryTime = kNaN;
     // For figures (kept for the first seed only).
     rfir::common::TPath2D estPath;

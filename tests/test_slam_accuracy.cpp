@@ -8,19 +8,15 @@
 
 using namespace slam_test;
 
-namespace
-{
-struct TAgg
-{
+namespace {
+struct TAgg {
     std::vector<double> robot, tags;
 };
-void add(TAgg& a, const TResult& r)
-{
+void add(TAgg& a, const TResult& r) {
     a.robot.push_back(r.robot);
     a.tags.push_back(r.tags);
 }
-void print(const char* name, const TAgg& a)
-{
+void print(const char* name, const TAgg& a) {
     std::printf("%-10s robot %6.1f mm (sd %5.1f)  tags %6.1f mm (sd %5.1f)\n", name,
                 1e3 * mean(a.robot), 1e3 * stddev(a.robot), 1e3 * mean(a.tags),
                 1e3 * stddev(a.tags));
@@ -30,11 +26,9 @@ void print(const char* name, const TAgg& a)
 // Thesis tables 4.1 / 4.2: 300 mm readers, 4 tags/m^2. PS-SLAM at least as
 // good as PF-SLAM (within the seed-to-seed spread); both beat FastSLAM and
 // dead reckoning in mean robot and tag error.
-TEST(SlamAccuracy, Rfid300mmOrdering)
-{
+TEST(SlamAccuracy, Rfid300mmOrdering) {
     TAgg pf, ps, fs, dr;
-    for (uint64_t seed : {1, 2, 3})
-    {
+    for (uint64_t seed : {1, 2, 3}) {
         const auto sim = rfir::sim::simulate(setup300mm(150), seed);
         add(pf, runMethod(sim, stockConfig("pf"), seed));
         add(ps, runMethod(sim, stockConfig("ps"), seed));
@@ -50,8 +44,7 @@ TEST(SlamAccuracy, Rfid300mmOrdering)
     EXPECT_LE(mean(ps.robot), mean(pf.robot) + spreadR);
     EXPECT_LE(mean(ps.tags), mean(pf.tags) + spreadT);
     for (const TAgg* m : {&pf, &ps})
-        for (const TAgg* base : {&fs, &dr})
-        {
+        for (const TAgg* base : {&fs, &dr}) {
             EXPECT_LT(mean(m->robot), mean(base->robot));
             EXPECT_LT(mean(m->tags), mean(base->tags));
         }
@@ -59,38 +52,32 @@ TEST(SlamAccuracy, Rfid300mmOrdering)
 
 // Thesis table 3.1: 60 mm readers, 16 tags/m^2, rectangle loop x3 (seed
 // values PF 33.1 / 35.3 mm).
-TEST(SlamAccuracy, Rfid60mmLoop)
-{
+TEST(SlamAccuracy, Rfid60mmLoop) {
     TAgg pf, ps;
-    for (uint64_t seed : {1, 2})
-    {
+    for (uint64_t seed : {1, 2}) {
         const auto sim = rfir::sim::simulate(setup60mmLoop(3), seed);
         add(pf, runMethod(sim, stockConfig("pf"), seed));
         add(ps, runMethod(sim, stockConfig("ps"), seed));
     }
     print("pf", pf);
     print("ps", ps);
-    for (const TAgg* m : {&pf, &ps})
-    {
+    for (const TAgg* m : {&pf, &ps}) {
         EXPECT_LT(mean(m->robot), 0.040);
         EXPECT_LT(mean(m->tags), 0.045);
     }
 }
 
-TEST(SlamDeterminism, SameSeedSamePath)
-{
+TEST(SlamDeterminism, SameSeedSamePath) {
     auto simCfg = setup60mmLoop(1);
     simCfg.maxDuration = 30;
     const auto sim = rfir::sim::simulate(simCfg, 4);
-    for (const char* m : {"pf", "ps", "fastslam"})
-    {
+    for (const char* m : {"pf", "ps", "fastslam"}) {
         const auto cfg = stockConfig(m, {{"slam.robot_particles", "100"}});
         const auto a = runMethod(sim, cfg, 9), b = runMethod(sim, cfg, 9),
                    c = runMethod(sim, cfg, 10);
         ASSERT_EQ(a.run.path.size(), b.run.path.size());
         bool differs = false;
-        for (size_t i = 0; i < a.run.path.size(); i++)
-        {
+        for (size_t i = 0; i < a.run.path.size(); i++) {
             const auto &p = a.run.path[i].second, &q = b.run.path[i].second,
                        &r = c.run.path[i].second;
             EXPECT_EQ(p.x(), q.x()) << m << " step " << i;
@@ -105,8 +92,7 @@ TEST(SlamDeterminism, SameSeedSamePath)
 // Thesis 3.4.3: the robot is carried, without odometry, to a place mapped
 // earlier; PF-SLAM must recover. Without sensor resetting it must not (so
 // that the scenario is a real kidnapping).
-TEST(SlamKidnap, PFRecovers)
-{
+TEST(SlamKidnap, PFRecovers) {
     auto simCfg = setup60mmLoop(2);
     simCfg.kidnap.enabled = true;
     simCfg.kidnap.time = 70;
@@ -116,13 +102,16 @@ TEST(SlamKidnap, PFRecovers)
     auto after = [&](const TResult& r) {
         std::vector<double> e;
         for (const auto& pe : r.robotErrors.perPose)
-            if (pe.t > simCfg.kidnap.time + simCfg.kidnap.carryTime + 15) e.push_back(pe.dist);
+            if (pe.t > simCfg.kidnap.time + simCfg.kidnap.carryTime + 15)
+                e.push_back(pe.dist);
         return mean(e);
     };
     const auto with = runMethod(sim, stockConfig("pf"), 3);
-    const auto without = runMethod(sim, stockConfig("pf", {{"kidnap.enabled", "false"}}), 3);
-    std::printf("after kidnapping: with resetting %.1f mm (%zu resets), without %.1f mm\n",
-                1e3 * after(with), with.run.resets, 1e3 * after(without));
+    const auto without =
+        runMethod(sim, stockConfig("pf", {{"kidnap.enabled", "false"}}), 3);
+    std::printf(
+        "after kidnapping: with resetting %.1f mm (%zu resets), without %.1f mm\n",
+        1e3 * after(with), with.run.resets, 1e3 * after(without));
     EXPECT_GE(with.run.resets, 1u);
     EXPECT_LT(after(with), 0.050);
     EXPECT_GT(after(without), 0.200);

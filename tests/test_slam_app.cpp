@@ -11,17 +11,14 @@
 #include <sstream>
 #include <string>
 
-namespace
-{
+namespace {
 const std::string kExe = std::string(RFIR_BINARY_DIR) + "/bin/rfir-slam";
 
-struct TRun
-{
+struct TRun {
     int code;
     std::string out;
 };
-TRun run(const std::string& args)
-{
+TRun run(const std::string& args) {
     const std::string cmd = kExe + " " + args + " 2>&1";
     FILE* p = ::popen(cmd.c_str(), "r");
     std::string out;
@@ -30,15 +27,13 @@ TRun run(const std::string& args)
     const int st = p ? ::pclose(p) : -1;
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
-std::string slurp(const std::string& f)
-{
+std::string slurp(const std::string& f) {
     std::ifstream in(f);
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
 }
-std::string dataDir()
-{
+std::string dataDir() {
     static std::string dir;
     if (!dir.empty()) return dir;
     dir = mrpt::system::getTempFileName() + "_slamapp";
@@ -50,8 +45,7 @@ std::string dataDir()
 }
 }  // namespace
 
-TEST(SlamApp, WritesEveryOutput)
-{
+TEST(SlamApp, WritesEveryOutput) {
     ASSERT_TRUE(mrpt::system::fileExists(kExe)) << kExe;
     const std::string d = dataDir(), out = d + "/out_pf";
     const auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + out + " --seed 3");
@@ -71,11 +65,9 @@ TEST(SlamApp, WritesEveryOutput)
     EXPECT_EQ(slurp(out + "/path.tum"), slurp(out2 + "/path.tum"));
 }
 
-TEST(SlamApp, EveryMethodWithItsStockIni)
-{
+TEST(SlamApp, EveryMethodWithItsStockIni) {
     const std::string d = dataDir();
-    for (const char* m : {"ps", "fastslam", "odometry"})
-    {
+    for (const char* m : {"ps", "fastslam", "odometry"}) {
         const auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + d + "/out_" + m +
                            " --method " + m + " --start 0.5 0.5 0");
         EXPECT_EQ(r.code, 0) << m << ": " << r.out;
@@ -83,8 +75,7 @@ TEST(SlamApp, EveryMethodWithItsStockIni)
     }
 }
 
-TEST(SlamApp, BadSettingsAreRefused)
-{
+TEST(SlamApp, BadSettingsAreRefused) {
     const std::string d = dataDir(), ini = d + "/bad.ini";
     std::string text = slurp(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_pf.ini");
     text.replace(text.find("robot_particles = 500"), 21, "robot_particles = 0");

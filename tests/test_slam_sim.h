@@ -15,28 +15,24 @@
 #include <string>
 #include <vector>
 
-namespace slam_test
-{
+namespace slam_test {
 /** The sim's steps as SLAM inputs: odometry increments between consecutive
  * absolute odometry poses, RFID and range-bearing observations. */
-inline std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out)
-{
+inline std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out) {
     std::vector<rfir::slam::TSlamInput> v;
     std::optional<mrpt::poses::CPose2D> last;
-    for (const auto& s : out.steps)
-    {
+    for (const auto& s : out.steps) {
         rfir::slam::TSlamInput in;
         in.t = s.t;
-        if (s.odometry)
-        {
+        if (s.odometry) {
             if (last) in.odometryIncrement = *s.odometry - *last;
             last = s.odometry;
         }
-        for (const auto& o : s.obs)
-        {
+        for (const auto& o : s.obs) {
             if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
                 in.rfid = r;
-            if (auto b = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
+            if (auto b =
+                    std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
                 in.rb = b;
         }
         v.push_back(in);
@@ -47,24 +43,23 @@ inline std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput&
 /** The stock INI of `method`, with optional "section.key = value" edits. */
 inline rfir::slam::TSlamConfig stockConfig(
     const std::string& method,
-    const std::vector<std::pair<std::string, std::string>>& edits = {})
-{
-    const std::string file = method == "fastslam" ? "fastslam" : method == "ps" ? "ps" : "pf";
+    const std::vector<std::pair<std::string, std::string>>& edits = {}) {
+    const std::string file = method == "fastslam" ? "fastslam"
+                             : method == "ps"     ? "ps"
+                                                  : "pf";
     // A memory copy: CConfigFile would write the edits back into the stock INI.
     std::ifstream in(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + file + ".ini");
     std::stringstream text;
     text << in.rdbuf();
     mrpt::config::CConfigFileMemory f(text.str());
-    for (const auto& [sk, v] : edits)
-    {
+    for (const auto& [sk, v] : edits) {
         const auto dot = sk.find('.');
         f.write(sk.substr(0, dot), sk.substr(dot + 1), v);
     }
     return rfir::slam::loadSlamConfig(f, method);
 }
 
-struct TResult
-{
+struct TResult {
     double robot = 0, tags = 0;  //!< mean distance errors, m
     size_t mapped = 0;
     rfir::slam::TSlamRun run;
@@ -72,8 +67,7 @@ struct TResult
 };
 
 inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConfig cfg,
-                         uint64_t seed)
-{
+                         uint64_t seed) {
     cfg.seed = seed;
     mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
     auto engine = rfir::slam::makeEngine(cfg, sim.header);
@@ -84,8 +78,7 @@ inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConf
     r.robotErrors = rfir::eval::computeRobotErrors(est, sim.groundTruth);
     r.robot = r.robotErrors.stats.mean_dist;
     rfir::common::TMapFile m;
-    for (const auto& l : r.run.map)
-    {
+    for (const auto& l : r.run.map) {
         rfir::common::TMapEntry e;
         e.kind = l.isTag ? rfir::common::TMapEntry::Kind::Tag
                          : rfir::common::TMapEntry::Kind::Landmark;
@@ -104,8 +97,7 @@ inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConf
 }
 
 /** The thesis 4.1 / 4.2 setup: 8 readers of 300 mm, 4 tags/m^2. */
-inline rfir::sim::TSimConfig setup300mm(double duration)
-{
+inline rfir::sim::TSimConfig setup300mm(double duration) {
     rfir::sim::TSimConfig c;
     c.readers = rfir::sim::ringReaderLayout(0.4, 0.15);
     c.rfid.density = 4;
@@ -116,8 +108,7 @@ inline rfir::sim::TSimConfig setup300mm(double duration)
 }
 
 /** The thesis 3.1 setup: 8 readers of 60 mm, 16 tags/m^2, rectangle loop. */
-inline rfir::sim::TSimConfig setup60mmLoop(int laps)
-{
+inline rfir::sim::TSimConfig setup60mmLoop(int laps) {
     rfir::sim::TSimConfig c;  // the simulator's defaults are this setup
     c.readers = rfir::sim::ringReaderLayout(0.15, 0.03);
     c.rfid.density = 16;
@@ -126,14 +117,12 @@ inline rfir::sim::TSimConfig setup60mmLoop(int laps)
     return c;
 }
 
-inline double mean(const std::vector<double>& v)
-{
+inline double mean(const std::vector<double>& v) {
     double s = 0;
     for (double x : v) s += x;
     return v.empty() ? 0 : s / double(v.size());
 }
-inline double stddev(const std::vector<double>& v)
-{
+inline double stddev(const std::vector<double>& v) {
     const double m = mean(v);
     double s = 0;
     for (double x : v) s += (x - m) * (x - m);

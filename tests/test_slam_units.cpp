@@ -17,8 +17,7 @@
 
 using namespace rfir::slam;
 
-TEST(SlamPersistentVector, CopiesAreIndependent)
-{
+TEST(SlamPersistentVector, CopiesAreIndependent) {
     CPersistentVector<int> a;
     for (int i = 0; i < 300; i++) a.set(size_t(i), std::make_shared<const int>(i));
     CPersistentVector<int> b = a;  // one pointer copy
@@ -32,8 +31,7 @@ TEST(SlamPersistentVector, CopiesAreIndependent)
     EXPECT_EQ(a.get(5000), nullptr);
 }
 
-TEST(SlamEKF, RfidUpdateByHand)
-{
+TEST(SlamEKF, RfidUpdateByHand) {
     // A tag at (1, 0) with variance 0.01 in x and y, measured at the reader
     // centre (0.5, 0) of a robot at (0.45, 0, 0) with R = 0.01 I: the gain is
     // 1/2 and the mean moves halfway to 0.95.
@@ -51,13 +49,12 @@ TEST(SlamEKF, RfidUpdateByHand)
     EXPECT_NEAR(lm.mean.x(), 0.975, 1e-12);
     EXPECT_NEAR(lm.cov(0, 0), 0.005, 1e-12);
     // log N(0.05; 0, 0.02) * N(0; 0, 0.02)
-    const double expect = -0.5 * (0.0025 / 0.02) - 0.5 * std::log(0.02 * 0.02) -
-                          std::log(2 * M_PI);
+    const double expect =
+        -0.5 * (0.0025 / 0.02) - 0.5 * std::log(0.02 * 0.02) - std::log(2 * M_PI);
     EXPECT_NEAR(ll, expect, 1e-12);
 }
 
-TEST(SlamEKF, RangeBearingInverseMatchesPrediction)
-{
+TEST(SlamEKF, RangeBearingInverseMatchesPrediction) {
     CGaussianLandmarkModel model({});
     TDetection d;
     d.kind = TDetection::Kind::RangeBearing;
@@ -70,14 +67,12 @@ TEST(SlamEKF, RangeBearingInverseMatchesPrediction)
     EXPECT_NEAR(z.innovation.norm(), 0.0, 1e-12);
 }
 
-TEST(SlamFastSLAM, ResamplingSharesLandmarks)
-{
+TEST(SlamFastSLAM, ResamplingSharesLandmarks) {
     mrpt::random::getRandomGenerator().randomize(3);
     CFastSLAMParticles pf;
     pf.reset(mrpt::poses::CPose2D(), 200, 0.01, 0.01);
     std::vector<TDetection> dets;
-    for (int k = 0; k < 50; k++)
-    {
+    for (int k = 0; k < 50; k++) {
         TDetection d;
         d.id = "T" + std::to_string(k);
         d.a = 0.01 * k;
@@ -103,10 +98,8 @@ TEST(SlamFastSLAM, ResamplingSharesLandmarks)
     EXPECT_NEAR(lms[10].mean.x(), 0.1, 0.05);
 }
 
-namespace
-{
-std::string stockIni(const std::string& m)
-{
+namespace {
+std::string stockIni(const std::string& m) {
     std::ifstream f(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + m + ".ini");
     std::stringstream ss;
     ss << f.rdbuf();
@@ -115,17 +108,13 @@ std::string stockIni(const std::string& m)
 /** Loading the stock pf INI with `edit` appended to `section` throws a message
  * containing `expect`. */
 void expectRejected(const std::string& section, const std::string& key,
-                    const std::string& value)
-{
+                    const std::string& value) {
     mrpt::config::CConfigFileMemory mem(stockIni("pf"));
     mem.write(section, key, value);
-    try
-    {
+    try {
         loadSlamConfig(mem);
         FAIL() << "accepted: [" << section << "] " << key << " = " << value;
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find(key), std::string::npos)
             << "message: " << e.what();
         EXPECT_NE(std::string(e.what()).find(section), std::string::npos)
@@ -134,10 +123,8 @@ void expectRejected(const std::string& section, const std::string& key,
 }
 }  // namespace
 
-TEST(SlamConfig, StockInisLoad)
-{
-    for (const char* m : {"pf", "ps", "fastslam"})
-    {
+TEST(SlamConfig, StockInisLoad) {
+    for (const char* m : {"pf", "ps", "fastslam"}) {
         mrpt::config::CConfigFileMemory mem(stockIni(m));
         const TSlamConfig c = loadSlamConfig(mem);
         EXPECT_EQ(c.slam.method, m);
@@ -149,8 +136,7 @@ TEST(SlamConfig, StockInisLoad)
     }
 }
 
-TEST(SlamConfig, BadSettingsNameTheKey)
-{
+TEST(SlamConfig, BadSettingsNameTheKey) {
     expectRejected("slam", "robot_particles", "0");
     expectRejected("slam", "robot_particles", "-5");
     expectRejected("slam", "method", "gmapping");
@@ -169,8 +155,7 @@ TEST(SlamConfig, BadSettingsNameTheKey)
     EXPECT_THROW(loadSlamConfig(ok, std::string("pff")), std::invalid_argument);
 }
 
-TEST(SlamKidnap, ResettingPosesExplainTheDetection)
-{
+TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
     mrpt::random::CRandomGenerator rng(5);
     TAnchor a;
     a.det.id = "T";
@@ -180,8 +165,7 @@ TEST(SlamKidnap, ResettingPosesExplainTheDetection)
     a.det.halfY = 0.05;
     a.x = 3;
     a.y = 4;
-    for (int i = 0; i < 100; i++)
-    {
+    for (int i = 0; i < 100; i++) {
         const double phi = rng.drawUniform(-M_PI, M_PI);
         const auto p = poseFromAnchor(a, phi, rng);
         // The tag seen from p lies inside the reader's area.

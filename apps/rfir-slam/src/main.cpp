@@ -8,16 +8,13 @@
 #include <sstream>
 #include <vector>
 
-namespace
-{
+namespace {
 /** TCLAP takes one token per value: fold "--start X Y PHI" into one token
  * (negative numbers would otherwise look like flags). */
-std::vector<std::string> foldStart(int argc, char** argv)
-{
+std::vector<std::string> foldStart(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
     for (size_t i = 1; i < args.size(); i++)
-        if (args[i] == "--start")
-        {
+        if (args[i] == "--start") {
             if (i + 3 >= args.size())
                 throw std::invalid_argument("--start needs three numbers: X Y PHI");
             args[i + 1] = args[i + 1] + " " + args[i + 2] + " " + args[i + 3];
@@ -26,30 +23,30 @@ std::vector<std::string> foldStart(int argc, char** argv)
     return args;
 }
 
-mrpt::poses::CPose2D parseStart(const std::string& s)
-{
+mrpt::poses::CPose2D parseStart(const std::string& s) {
     std::istringstream is(s);
     double x, y, phi;
     std::string extra;
     if (!(is >> x >> y >> phi) || (is >> extra))
-        throw std::invalid_argument("--start needs three numbers: X Y PHI (got '" + s + "')");
+        throw std::invalid_argument("--start needs three numbers: X Y PHI (got '" + s +
+                                    "')");
     return {x, y, phi};
 }
 }  // namespace
 
-int main(int argc, char** argv)
-{
-    try
-    {
+int main(int argc, char** argv) {
+    try {
         TCLAP::CmdLine cmd(
             "rfir-slam: PF-SLAM, PS-SLAM or FastSLAM on a project rawlog. Writes "
             "path.tum, map.txt, settings.ini, stats.json, path_map.png (and "
             "errors.json with ground truth) into --out-dir.",
             ' ', "0.1");
-        TCLAP::ValueArg<std::string> rawlog("", "rawlog", "input rawlog", true, "", "FILE", cmd);
-        TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", true, "", "DIR",
-                                            cmd);
-        TCLAP::ValueArg<std::string> method("", "method", "pf | ps | fastslam | odometry "
+        TCLAP::ValueArg<std::string> rawlog("", "rawlog", "input rawlog", true, "",
+                                            "FILE", cmd);
+        TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", true, "",
+                                            "DIR", cmd);
+        TCLAP::ValueArg<std::string> method("", "method",
+                                            "pf | ps | fastslam | odometry "
                                             "(default: the INI's [slam] method, or pf)",
                                             false, "", "NAME", cmd);
         TCLAP::ValueArg<std::string> config("", "config",
@@ -59,8 +56,8 @@ int main(int argc, char** argv)
         TCLAP::ValueArg<std::string> start("", "start",
                                            "start pose X Y PHI (default: the rawlog's)",
                                            false, "", "X Y PHI", cmd);
-        TCLAP::ValueArg<std::string> gtPath("", "gt-path", "ground-truth path (TUM)", false,
-                                            "", "TUM", cmd);
+        TCLAP::ValueArg<std::string> gtPath("", "gt-path", "ground-truth path (TUM)",
+                                            false, "", "TUM", cmd);
         TCLAP::ValueArg<std::string> gtMap("", "gt-map", "ground-truth map", false, "",
                                            "FILE", cmd);
         const auto args = foldStart(argc, argv);
@@ -79,14 +76,10 @@ int main(int argc, char** argv)
         a.seed = seed.getValue();
         if (start.isSet()) a.start = parseStart(start.getValue());
         return rfir::slamapp::runSlamApp(a);
-    }
-    catch (const TCLAP::ArgException& e)
-    {
+    } catch (const TCLAP::ArgException& e) {
         std::cerr << "rfir-slam: " << e.error() << " (" << e.argId() << ")\n";
         return 2;
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         std::cerr << "rfir-slam: error: " << e.what() << "\n";
         return 1;
     }

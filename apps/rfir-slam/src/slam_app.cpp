@@ -19,16 +19,13 @@
 #include <iostream>
 #include <sstream>
 
-namespace rfir::slamapp
-{
+namespace rfir::slamapp {
 using rfir::common::TMapEntry;
 using rfir::common::TMapFile;
 using rfir::common::TPath2D;
 
-namespace
-{
-std::string exeDir()
-{
+namespace {
+std::string exeDir() {
     char buf[4096];
     const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
     if (n <= 0) return ".";
@@ -36,30 +33,26 @@ std::string exeDir()
     return mrpt::system::extractFileDirectory(buf);
 }
 
-std::string withoutRawlogExt(const std::string& p)
-{
+std::string withoutRawlogExt(const std::string& p) {
     const std::string ext = ".rawlog";
     if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
         return p.substr(0, p.size() - ext.size());
     return p;
 }
 
-struct TLoaded
-{
+struct TLoaded {
     rfir::obs::CObservationLogHeader header;
     std::vector<rfir::slam::TSlamInput> inputs;
 };
 
-TLoaded readInputs(const std::string& path)
-{
+TLoaded readInputs(const std::string& path) {
     if (!mrpt::system::fileExists(path))
         throw std::runtime_error("cannot read rawlog '" + path + "'");
     rfir::common::CRawlogReader rd(path);
     TLoaded l;
     l.header = rd.header();
     rfir::common::TRawlogStep st;
-    while (rd.next(st))
-    {
+    while (rd.next(st)) {
         rfir::slam::TSlamInput in;
         in.t = st.t;
         in.odometryIncrement = st.odometryIncrement;
@@ -71,18 +64,15 @@ TLoaded readInputs(const std::string& path)
     return l;
 }
 
-TPath2D toPath(const rfir::slam::TSlamRun& run)
-{
+TPath2D toPath(const rfir::slam::TSlamRun& run) {
     TPath2D p;
     for (const auto& [t, pose] : run.path) p.push_back({t, pose});
     return p;
 }
 
-TMapFile toMap(const std::vector<rfir::slam::TLandmarkOut>& lms)
-{
+TMapFile toMap(const std::vector<rfir::slam::TLandmarkOut>& lms) {
     TMapFile m;
-    for (const auto& l : lms)
-    {
+    for (const auto& l : lms) {
         TMapEntry e;
         e.kind = l.isTag ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark;
         e.id = l.id;
@@ -96,50 +86,45 @@ TMapFile toMap(const std::vector<rfir::slam::TLandmarkOut>& lms)
 }
 
 std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
-                      const TMapFile& map, uint64_t seed)
-{
+                      const TMapFile& map, uint64_t seed) {
     size_t tags = 0, lms = 0;
     for (const auto& e : map) (e.kind == TMapEntry::Kind::Tag ? tags : lms)++;
     std::ostringstream o;
-    o << std::setprecision(9) << "{\"method\": \"" << cfg.slam.method << "\", \"seed\": " << seed
-      << ", \"steps\": " << run.path.size() << ", \"tags_mapped\": " << tags
-      << ", \"landmarks_mapped\": " << lms
+    o << std::setprecision(9) << "{\"method\": \"" << cfg.slam.method
+      << "\", \"seed\": " << seed << ", \"steps\": " << run.path.size()
+      << ", \"tags_mapped\": " << tags << ", \"landmarks_mapped\": " << lms
       << ", \"robot_particles\": " << cfg.slam.robot_particles
       << ", \"mean_update_time_s\": " << run.meanStepTime
       << ", \"max_update_time_s\": " << run.maxStepTime
-      << ", \"total_time_s\": " << run.totalTime
-      << ", \"kidnap_resets\": " << run.resets << "}\n";
+      << ", \"total_time_s\": " << run.totalTime << ", \"kidnap_resets\": " << run.resets
+      << "}\n";
     return o.str();
 }
 
 /** Ground truth beside the rawlog unless given. */
-void findGroundTruth(TAppArgs& a)
-{
+void findGroundTruth(TAppArgs& a) {
     const std::string base = withoutRawlogExt(a.rawlog);
-    if (!a.gtPath && mrpt::system::fileExists(base + ".gt.tum")) a.gtPath = base + ".gt.tum";
+    if (!a.gtPath && mrpt::system::fileExists(base + ".gt.tum"))
+        a.gtPath = base + ".gt.tum";
     if (!a.gtMap && mrpt::system::fileExists(base + ".gt_map.txt"))
         a.gtMap = base + ".gt_map.txt";
 }
 
 void evaluate(const TAppArgs& a, const std::string& label, const TPath2D& est,
-              const TMapFile& estMap, rfir::eval::TMapFigure& fig)
-{
+              const TMapFile& estMap, rfir::eval::TMapFigure& fig) {
     rfir::eval::TEvalResult r;
     r.label = label;
-    if (a.gtPath)
-    {
+    if (a.gtPath) {
         const TPath2D gt = rfir::common::loadTUM(*a.gtPath);
         fig.gtPath = gt;
         r.robot = rfir::eval::computeRobotErrors(est, gt);
         const auto info = rfir::eval::readRawlogInfo(a.rawlog);
-        if (!info.odometry.empty())
-        {
+        if (!info.odometry.empty()) {
             const TPath2D odo = rfir::eval::alignOdometryAtStart(info.odometry, gt);
             fig.odomPath = odo;
             r.odometry = rfir::eval::computeRobotErrors(odo, gt);
         }
-        if (a.gtMap)
-        {
+        if (a.gtMap) {
             const TMapFile gtm = rfir::common::loadMapFile(*a.gtMap);
             fig.gtMap = gtm;
             bool anyTag = false;
@@ -154,8 +139,7 @@ void evaluate(const TAppArgs& a, const std::string& label, const TPath2D& est,
                 rfir::eval::setPassedOver(
                     *r.map, rfir::eval::landmarksInView(gtm, gt, *info.rbSensor), estMap);
         }
-    }
-    else if (a.gtMap)
+    } else if (a.gtMap)
         std::cerr << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
     if (!r.robot) return;
     std::cout << rfir::eval::formatErrorTable({r});
@@ -165,17 +149,18 @@ void evaluate(const TAppArgs& a, const std::string& label, const TPath2D& est,
 }
 }  // namespace
 
-std::string stockConfigPath(const std::string& method)
-{
-    const std::string m = method == "fastslam" ? "fastslam" : method == "ps" ? "ps" : "pf";
+std::string stockConfigPath(const std::string& method) {
+    const std::string m = method == "fastslam" ? "fastslam"
+                          : method == "ps"     ? "ps"
+                                               : "pf";
     return exeDir() + "/../share/rfir/config_ini/slam_" + m + ".ini";
 }
 
-int runSlamApp(const TAppArgs& args)
-{
+int runSlamApp(const TAppArgs& args) {
     TAppArgs a = args;
     if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
-    const std::string ini = a.config ? *a.config : stockConfigPath(a.method.value_or("pf"));
+    const std::string ini =
+        a.config ? *a.config : stockConfigPath(a.method.value_or("pf"));
     rfir::slam::TSlamConfig cfg = rfir::slam::loadSlamConfigFile(ini, a.method);
     cfg.seed = a.seed;
     mrpt::random::getRandomGenerator().randomize(uint32_t(a.seed));
@@ -200,8 +185,9 @@ int runSlamApp(const TAppArgs& args)
     const TPath2D path = toPath(run);
     const TMapFile map = toMap(run.map);
     rfir::common::saveTUM(a.outDir + "/path.tum", path);
-    rfir::common::saveMapFile(a.outDir + "/map.txt", map,
-                              "rfir-slam " + cfg.slam.method + ": tag id x y sx sy");
+    rfir::common::saveMapFile(
+        a.outDir + "/map.txt", map,
+        "rfir-slam " + cfg.slam.method + ": <tag or landmark> <id> <x> <y> <sx> <sy>");
     const std::string settings = rfir::slam::dumpSlamConfig(cfg);
     rfir::common::writeFileAtomically(a.outDir + "/settings.ini",
                                       [&](std::ostream& o) { o << settings; });
@@ -209,8 +195,8 @@ int runSlamApp(const TAppArgs& args)
         o << statsJson(cfg, run, map, a.seed);
     });
     rfir::eval::TMapFigure fig;
-    fig.title = "rfir-slam " + cfg.slam.method + ": " +
-                mrpt::system::extractFileName(a.rawlog);
+    fig.title =
+        "rfir-slam " + cfg.slam.method + ": " + mrpt::system::extractFileName(a.rawlog);
     fig.estPath = path;
     fig.estMap = map;
     evaluate(a, cfg.slam.method, path, map, fig);

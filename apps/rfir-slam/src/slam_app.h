@@ -8,10 +8,8 @@
 #include <optional>
 #include <string>
 
-namespace rfir::slamapp
-{
-struct TAppArgs
-{
+namespace rfir::slamapp {
+struct TAppArgs {
     std::string rawlog, outDir;
     std::optional<std::string> method, config, gtPath, gtMap;
     uint64_t seed = 1;

@@ -7,11 +7,9 @@
 
 #include <rfir/slam/ini_check.h>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 void TFastSLAMOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                          const std::string& s)
-{
+                                          const std::string& s) {
     meas.rfidStdFactor = c.read_double(s, "rfid_std_factor", meas.rfidStdFactor);
     meas.rbStdRange = c.read_double(s, "rb_std_range", meas.rbStdRange);
     meas.rbStdBearing = c.read_double(s, "rb_std_bearing", meas.rbStdBearing);
@@ -21,8 +19,7 @@ void TFastSLAMOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 }
 
 void TFastSLAMOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                        const std::string& s) const
-{
+                                        const std::string& s) const {
     c.write(s, "rfid_std_factor", meas.rfidStdFactor, -1, -1,
             "RFID: tag std about the reader centre / half side");
     c.write(s, "rb_std_range", meas.rbStdRange, -1, -1,
@@ -32,12 +29,10 @@ void TFastSLAMOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
 }
 
 void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
-                               double stdPhi)
-{
+                               double stdPhi) {
     auto& rng = mrpt::random::getRandomGenerator();
     m_particles.assign(M, {});
-    for (auto& p : m_particles)
-    {
+    for (auto& p : m_particles) {
         p.log_w = 0;
         p.d.pose = start + mrpt::poses::CPose2D(0, 0, 0);
         if (stdXY > 0 || stdPhi > 0)
@@ -50,8 +45,7 @@ void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, doub
     isTag_.clear();
 }
 
-size_t CFastSLAMParticles::indexOf(const TDetection& d)
-{
+size_t CFastSLAMParticles::indexOf(const TDetection& d) {
     // Tags and range-bearing landmarks are separate name spaces.
     const std::string key = (d.kind == TDetection::Kind::RFID ? "t:" : "l:") + d.id;
     auto it = index_.find(key);
@@ -63,15 +57,12 @@ size_t CFastSLAMParticles::indexOf(const TDetection& d)
 }
 
 double CFastSLAMParticles::updateParticle(TFastSLAMParticle& p,
-                                          const std::vector<size_t>& idx)
-{
+                                          const std::vector<size_t>& idx) {
     double logLik = 0;
-    for (size_t k = 0; k < idx.size(); k++)
-    {
+    for (size_t k = 0; k < idx.size(); k++) {
         const TDetection& d = (*detections_)[k];
         const TLandmarkEKF* old = p.landmarks.get(idx[k]);
-        if (!old)
-        {
+        if (!old) {
             // A new landmark: every particle sees it now, so its importance
             // factor is a common constant and is left out.
             p.landmarks.set(idx[k], std::make_shared<const TLandmarkEKF>(
@@ -87,14 +78,11 @@ double CFastSLAMParticles::updateParticle(TFastSLAMParticle& p,
 
 void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
-    const mrpt::bayes::CParticleFilter::TParticleFilterOptions&)
-{
-    if (auto mv = action ? action->getBestMovementEstimation() : nullptr)
-    {
+    const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
+    if (auto mv = action ? action->getBestMovementEstimation() : nullptr) {
         mv->prepareFastDrawSingleSamples();
         mrpt::poses::CPose2D inc;
-        for (auto& p : m_particles)
-        {
+        for (auto& p : m_particles) {
             mv->fastDrawSingleSample(inc);
             p.d.pose = p.d.pose + inc;
         }
@@ -104,8 +92,7 @@ void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     std::vector<size_t> idx;
     for (const auto& d : *detections_) idx.push_back(indexOf(d));
     double best = -1e300;
-    for (auto& p : m_particles)
-    {
+    for (auto& p : m_particles) {
         const double ll = updateParticle(p.d, idx);
         p.log_w += ll;
         best = std::max(best, ll);
@@ -113,31 +100,29 @@ void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     lastMaxLogLik_ = best / double(detections_->size());
 }
 
-mrpt::poses::CPose2D CFastSLAMParticles::meanPose() const
-{
+mrpt::poses::CPose2D CFastSLAMParticles::meanPose() const {
     std::vector<double> lw(m_particles.size());
     for (size_t i = 0; i < lw.size(); i++) lw[i] = m_particles[i].log_w;
-    return weightedMeanPose(m_particles.size(), lw,
-                            [&](size_t i) -> const mrpt::poses::CPose2D& {
-                                return m_particles[i].d.pose;
-                            });
+    return weightedMeanPose(
+        m_particles.size(), lw,
+        [&](size_t i) -> const mrpt::poses::CPose2D& { return m_particles[i].d.pose; });
 }
 
-std::vector<CFastSLAMParticles::TLandmarkEstimate> CFastSLAMParticles::landmarks() const
-{
+std::vector<CFastSLAMParticles::TLandmarkEstimate> CFastSLAMParticles::landmarks() const {
     std::vector<double> w(m_particles.size());
     double mx = -1e300, sw = 0;
     for (const auto& p : m_particles) mx = std::max(mx, p.log_w);
-    for (size_t i = 0; i < w.size(); i++) sw += (w[i] = std::exp(m_particles[i].log_w - mx));
+    for (size_t i = 0; i < w.size(); i++)
+        sw += (w[i] = std::exp(m_particles[i].log_w - mx));
     std::vector<TLandmarkEstimate> out;
-    for (size_t j = 0; j < names_.size(); j++)
-    {
-        TLandmarkEstimate e{names_[j], isTag_[j], Eigen::Vector2d::Zero(), Eigen::Matrix2d::Zero()};
-        for (size_t i = 0; i < w.size(); i++)
-            if (auto* lm = m_particles[i].d.landmarks.get(j)) e.mean += w[i] / sw * lm->mean;
+    for (size_t j = 0; j < names_.size(); j++) {
+        TLandmarkEstimate e{names_[j], isTag_[j], Eigen::Vector2d::Zero(),
+                            Eigen::Matrix2d::Zero()};
         for (size_t i = 0; i < w.size(); i++)
             if (auto* lm = m_particles[i].d.landmarks.get(j))
-            {
+                e.mean += w[i] / sw * lm->mean;
+        for (size_t i = 0; i < w.size(); i++)
+            if (auto* lm = m_particles[i].d.landmarks.get(j)) {
                 const Eigen::Vector2d dm = lm->mean - e.mean;
                 e.cov += w[i] / sw * (lm->cov + dm * dm.transpose());
             }

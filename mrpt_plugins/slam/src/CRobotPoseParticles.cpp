@@ -8,15 +8,12 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
-                                double stdPhi)
-{
+                                double stdPhi) {
     auto& rng = mrpt::random::getRandomGenerator();
     m_particles.assign(M, {});
-    for (auto& p : m_particles)
-    {
+    for (auto& p : m_particles) {
         p.log_w = 0;
         p.d = start;
         if (stdXY > 0 || stdPhi > 0)
@@ -28,18 +25,15 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
     predicted_ = start;
 }
 
-mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const
-{
+mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
     std::vector<double> lw(m_particles.size());
     for (size_t i = 0; i < lw.size(); i++) lw[i] = m_particles[i].log_w;
-    return weightedMeanPose(m_particles.size(), lw,
-                            [&](size_t i) -> const mrpt::poses::CPose2D& {
-                                return m_particles[i].d;
-                            });
+    return weightedMeanPose(
+        m_particles.size(), lw,
+        [&](size_t i) -> const mrpt::poses::CPose2D& { return m_particles[i].d; });
 }
 
-void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p)
-{
+void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
     double best = -1e300;
     for (const auto& q : m_particles) best = std::max(best, q.log_w);
     m_particles.at(i).d = p;
@@ -48,16 +42,13 @@ void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p)
 
 void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
-    const mrpt::bayes::CParticleFilter::TParticleFilterOptions&)
-{
+    const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     // Motion model (SPEC section 3): one draw of the odometry increment's
     // Gaussian per particle.
-    if (auto mv = action ? action->getBestMovementEstimation() : nullptr)
-    {
+    if (auto mv = action ? action->getBestMovementEstimation() : nullptr) {
         mv->prepareFastDrawSingleSamples();
         mrpt::poses::CPose2D inc;
-        for (auto& p : m_particles)
-        {
+        for (auto& p : m_particles) {
             mv->fastDrawSingleSample(inc);
             p.d = p.d + inc;
         }
@@ -67,13 +58,13 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     lastLL_.clear();
     if (!map_ || obs_.empty()) return;
     lastLL_.resize(m_particles.size());
-    for (size_t i = 0; i < m_particles.size(); i++)
-    {
+    for (size_t i = 0; i < m_particles.size(); i++) {
         const mrpt::poses::CPose3D pose(m_particles[i].d);
         double ll = 0;
         for (const auto& o : obs_) ll += map_->computeObservationLikelihood(*o, pose);
         if (!std::isfinite(ll))
-            throw std::runtime_error("the landmark map returned a non-finite log-likelihood");
+            throw std::runtime_error(
+                "the landmark map returned a non-finite log-likelihood");
         lastLL_[i] = ll;
         m_particles[i].log_w += ll;
     }

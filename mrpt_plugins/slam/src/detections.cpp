@@ -1,13 +1,10 @@
 #include <rfir/slam/detections.h>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 void appendDetections(const rfir::obs::CObservationRFIDReaders& o,
-                      std::vector<TDetection>& out)
-{
+                      std::vector<TDetection>& out) {
     for (const auto& r : o.readings)
-        for (const auto& tag : r.tags)
-        {
+        for (const auto& tag : r.tags) {
             TDetection d;
             d.kind = TDetection::Kind::RFID;
             d.id = tag;
@@ -21,11 +18,9 @@ void appendDetections(const rfir::obs::CObservationRFIDReaders& o,
 
 void appendDetections(const mrpt::obs::CObservationBearingRange& o,
                       const rfir::obs::CObservationLogHeader& hdr,
-                      std::vector<TDetection>& out)
-{
+                      std::vector<TDetection>& out) {
     const mrpt::poses::CPose2D sensor(o.sensorLocationOnRobot);
-    for (const auto& m : o.sensedData)
-    {
+    for (const auto& m : o.sensedData) {
         TDetection d;
         d.kind = TDetection::Kind::RangeBearing;
         d.id = hdr.landmarkName(m.landmarkID);

@@ -6,11 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 std::set<std::string> knownKeysOf(const mrpt::config::CLoadableOptions& opts,
-                                  const std::string& section)
-{
+                                  const std::string& section) {
     mrpt::config::CConfigFileMemory mem;
     opts.saveToConfigFile(mem, section);
     std::vector<std::string> keys;
@@ -21,12 +19,10 @@ std::set<std::string> knownKeysOf(const mrpt::config::CLoadableOptions& opts,
 }
 
 void rejectUnknownKeys(const mrpt::config::CConfigFileBase& cfg,
-                       const std::string& section, const std::set<std::string>& known)
-{
+                       const std::string& section, const std::set<std::string>& known) {
     std::vector<std::string> keys;
     cfg.getAllKeys(section, keys);
-    for (const auto& k : keys)
-    {
+    for (const auto& k : keys) {
         if (known.count(mrpt::system::trim(k))) continue;
         std::string list;
         for (const auto& s : known) list += (list.empty() ? "" : ", ") + s;
@@ -36,15 +32,13 @@ void rejectUnknownKeys(const mrpt::config::CConfigFileBase& cfg,
 }
 
 void loadStrict(mrpt::config::CLoadableOptions& opts,
-                const mrpt::config::CConfigFileBase& cfg, const std::string& section)
-{
+                const mrpt::config::CConfigFileBase& cfg, const std::string& section) {
     rejectUnknownKeys(cfg, section, knownKeysOf(opts, section));
     opts.loadFromConfigFile(cfg, section);
 }
 
 void badSetting(const std::string& section, const std::string& key,
-                const std::string& why)
-{
+                const std::string& why) {
     throw std::invalid_argument("[" + section + "] " + key + ": " + why);
 }
 

@@ -5,11 +5,9 @@
 
 #include <cmath>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                        const std::string& s)
-{
+                                        const std::string& s) {
     enabled = c.read_bool(s, "enabled", enabled);
     collapse_loglik = c.read_double(s, "collapse_loglik", collapse_loglik);
     const int k = c.read_int(s, "collapse_steps", int(collapse_steps));
@@ -26,8 +24,7 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 }
 
 void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                      const std::string& s) const
-{
+                                      const std::string& s) const {
     c.write(s, "enabled", enabled, -1, -1, "sensor resetting on collapse");
     c.write(s, "collapse_loglik", collapse_loglik, -1, -1,
             "lost if best mean log-lik per known detection is below this...");
@@ -40,11 +37,9 @@ void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "heading_std", heading_std, -1, -1, "their heading std [rad]");
 }
 
-bool CKidnapMonitor::update(std::optional<double> bestMeanLogLik)
-{
+bool CKidnapMonitor::update(std::optional<double> bestMeanLogLik) {
     if (!o_.enabled || !bestMeanLogLik) return false;
-    if (*bestMeanLogLik >= o_.collapse_loglik)
-    {
+    if (*bestMeanLogLik >= o_.collapse_loglik) {
         bad_ = 0;
         return false;
     }
@@ -55,17 +50,13 @@ bool CKidnapMonitor::update(std::optional<double> bestMeanLogLik)
 }
 
 mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
-                                    mrpt::random::CRandomGenerator& rng)
-{
+                                    mrpt::random::CRandomGenerator& rng) {
     const TDetection& d = a.det;
     double sx, sy;  // the landmark seen from the pose, robot frame
-    if (d.kind == TDetection::Kind::RFID)
-    {
+    if (d.kind == TDetection::Kind::RFID) {
         sx = d.a + rng.drawUniform(-d.halfX, d.halfX);
         sy = d.b + rng.drawUniform(-d.halfY, d.halfY);
-    }
-    else
-    {
+    } else {
         const double r = d.a + rng.drawGaussian1D(0, std::max(d.stdRange, 1e-3));
         const double b = d.b + rng.drawGaussian1D(0, std::max(d.stdBearing, 1e-3));
         const mrpt::poses::CPose2D p =
@@ -80,12 +71,10 @@ mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
 std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& anchors,
                                                  size_t n, double currentPhi,
                                                  const TKidnapOptions& o,
-                                                 mrpt::random::CRandomGenerator& rng)
-{
+                                                 mrpt::random::CRandomGenerator& rng) {
     std::vector<mrpt::poses::CPose2D> out;
     if (anchors.empty()) return out;
-    for (size_t i = 0; i < n; i++)
-    {
+    for (size_t i = 0; i < n; i++) {
         const TAnchor& a = anchors[rng.drawUniform32bit() % anchors.size()];
         const double phi = rng.drawUniform(0, 1) < o.keep_heading_share
                                ? currentPhi + rng.drawGaussian1D(0, o.heading_std)

@@ -4,28 +4,21 @@
 
 #include <cmath>
 
-namespace rfir::slam
-{
-namespace
-{
-Eigen::Matrix2d rot(double phi)
-{
+namespace rfir::slam {
+namespace {
+Eigen::Matrix2d rot(double phi) {
     Eigen::Matrix2d r;
     r << std::cos(phi), -std::sin(phi), std::sin(phi), std::cos(phi);
     return r;
 }
 }  // namespace
 
-Eigen::Matrix2d CGaussianLandmarkModel::noise(const TDetection& d) const
-{
+Eigen::Matrix2d CGaussianLandmarkModel::noise(const TDetection& d) const {
     Eigen::Matrix2d R = Eigen::Matrix2d::Zero();
-    if (d.kind == TDetection::Kind::RFID)
-    {
+    if (d.kind == TDetection::Kind::RFID) {
         R(0, 0) = mrpt::square(p_.rfidStdFactor * d.halfX);
         R(1, 1) = mrpt::square(p_.rfidStdFactor * d.halfY);
-    }
-    else
-    {
+    } else {
         R(0, 0) = mrpt::square(d.stdRange > 0 ? d.stdRange : p_.rbStdRange);
         R(1, 1) = mrpt::square(d.stdBearing > 0 ? d.stdBearing : p_.rbStdBearing);
     }
@@ -34,12 +27,10 @@ Eigen::Matrix2d CGaussianLandmarkModel::noise(const TDetection& d) const
 
 TLinearMeasurement CGaussianLandmarkModel::linearize(const TDetection& d,
                                                      const mrpt::poses::CPose2D& robot,
-                                                     const Eigen::Vector2d& m) const
-{
+                                                     const Eigen::Vector2d& m) const {
     TLinearMeasurement z;
     z.R = noise(d);
-    if (d.kind == TDetection::Kind::RFID)
-    {
+    if (d.kind == TDetection::Kind::RFID) {
         // h(m) = Rot(phi)^T (m - t): the tag in the robot frame.
         const Eigen::Matrix2d Rt = rot(robot.phi()).transpose();
         const Eigen::Vector2d h = Rt * (m - Eigen::Vector2d(robot.x(), robot.y()));
@@ -57,12 +48,10 @@ TLinearMeasurement CGaussianLandmarkModel::linearize(const TDetection& d,
 }
 
 TLandmarkEKF CGaussianLandmarkModel::initialize(const TDetection& d,
-                                                const mrpt::poses::CPose2D& robot) const
-{
+                                                const mrpt::poses::CPose2D& robot) const {
     TLandmarkEKF lm;
     const Eigen::Matrix2d R = noise(d);
-    if (d.kind == TDetection::Kind::RFID)
-    {
+    if (d.kind == TDetection::Kind::RFID) {
         const Eigen::Matrix2d Rr = rot(robot.phi());
         lm.mean = Eigen::Vector2d(robot.x(), robot.y()) + Rr * Eigen::Vector2d(d.a, d.b);
         lm.cov = Rr * R * Rr.transpose();
@@ -77,8 +66,7 @@ TLandmarkEKF CGaussianLandmarkModel::initialize(const TDetection& d,
     return lm;
 }
 
-double ekfUpdate(TLandmarkEKF& lm, const TLinearMeasurement& z)
-{
+double ekfUpdate(TLandmarkEKF& lm, const TLinearMeasurement& z) {
     const Eigen::Matrix2d S = z.H * lm.cov * z.H.transpose() + z.R;
     const Eigen::Matrix2d Sinv = S.inverse();
     const Eigen::Matrix<double, 2, 2> K = lm.cov * z.H.transpose() * Sinv;

@@ -10,20 +10,17 @@
 #include <stdexcept>
 #include <vector>
 
-namespace rfir::slam
-{
-namespace
-{
+namespace rfir::slam {
+namespace {
 template <class Opts>
-void loadSection(Opts& o, const mrpt::config::CConfigFileBase& ini, const std::string& s)
-{
+void loadSection(Opts& o, const mrpt::config::CConfigFileBase& ini,
+                 const std::string& s) {
     loadStrict(o, ini, s);
 }
 }  // namespace
 
 TSlamConfig loadSlamConfig(const mrpt::config::CConfigFileBase& ini,
-                           const std::optional<std::string>& methodOverride)
-{
+                           const std::optional<std::string>& methodOverride) {
     TSlamConfig c;
     std::vector<std::string> sections;
     ini.getAllSections(sections);
@@ -31,12 +28,12 @@ TSlamConfig loadSlamConfig(const mrpt::config::CConfigFileBase& ini,
     const std::set<std::string> mapSections = tagMapSections();
     for (const auto& s : sections)
         if (!s.empty() && !ours.count(s) && !mapSections.count(s))
-            throw std::invalid_argument("unknown section [" + s + "] (known: slam, motion, "
-                                        "kidnap, fastslam, " + joinSections(mapSections) +
-                                        ")");
+            throw std::invalid_argument("unknown section [" + s +
+                                        "] (known: slam, motion, "
+                                        "kidnap, fastslam, " +
+                                        joinSections(mapSections) + ")");
     loadSection(c.slam, ini, "slam");
-    if (methodOverride)
-    {
+    if (methodOverride) {
         parseMethod(*methodOverride);
         c.slam.method = *methodOverride;
     }
@@ -48,23 +45,18 @@ TSlamConfig loadSlamConfig(const mrpt::config::CConfigFileBase& ini,
 }
 
 TSlamConfig loadSlamConfigFile(const std::string& path,
-                               const std::optional<std::string>& methodOverride)
-{
+                               const std::optional<std::string>& methodOverride) {
     if (!mrpt::system::fileExists(path))
         throw std::invalid_argument("cannot read INI file '" + path + "'");
     mrpt::config::CConfigFile f(path);
-    try
-    {
+    try {
         return loadSlamConfig(f, methodOverride);
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         throw std::invalid_argument(path + ": " + e.what());
     }
 }
 
-std::string dumpSlamConfig(const TSlamConfig& cfg)
-{
+std::string dumpSlamConfig(const TSlamConfig& cfg) {
     mrpt::config::CConfigFileMemory mem;
     cfg.slam.saveToConfigFile(mem, "slam");
     cfg.motion.saveToConfigFile(mem, "motion");

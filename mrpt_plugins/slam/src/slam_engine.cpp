@@ -8,34 +8,27 @@
 #include <chrono>
 #include <cmath>
 
-namespace rfir::slam
-{
-namespace
-{
+namespace rfir::slam {
+namespace {
 /** The action collection the filters draw motion from: the odometry
  * increment with the INI's noise model (not the rawlog writer's). */
-mrpt::obs::CActionCollection motionAction(const TSlamInput& in, const TMotionOptions& m)
-{
+mrpt::obs::CActionCollection motionAction(const TSlamInput& in, const TMotionOptions& m) {
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement) acts.insert(makeMovement(*in.odometryIncrement, m));
     return acts;
 }
 
-class CFastSLAMEngine : public CSlamEngine
-{
-public:
+class CFastSLAMEngine : public CSlamEngine {
+  public:
     CFastSLAMEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
-        : cfg_(c), hdr_(h), pf_(c.fastslam)
-    {
+        : cfg_(c), hdr_(h), pf_(c.fastslam) {
         filter_.m_options = c.slam.pfOptions();
     }
-    void reset(const mrpt::poses::CPose2D& start) override
-    {
+    void reset(const mrpt::poses::CPose2D& start) override {
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
                   cfg_.slam.start_std_phi);
     }
-    void step(const TSlamInput& in) override
-    {
+    void step(const TSlamInput& in) override {
         std::vector<TDetection> dets;
         if (in.rfid) appendDetections(*in.rfid, dets);
         if (in.rb) appendDetections(*in.rb, hdr_, dets);
@@ -46,16 +39,15 @@ public:
         pose_ = pf_.meanPose();
     }
     mrpt::poses::CPose2D pose() const override { return pose_; }
-    std::vector<TLandmarkOut> landmarks() const override
-    {
+    std::vector<TLandmarkOut> landmarks() const override {
         std::vector<TLandmarkOut> out;
         for (const auto& e : pf_.landmarks())
-            out.push_back({e.isTag, e.id, e.mean.x(), e.mean.y(),
-                           std::sqrt(e.cov(0, 0)), std::sqrt(e.cov(1, 1))});
+            out.push_back({e.isTag, e.id, e.mean.x(), e.mean.y(), std::sqrt(e.cov(0, 0)),
+                           std::sqrt(e.cov(1, 1))});
         return out;
     }
 
-private:
+  private:
     TSlamConfig cfg_;
     rfir::obs::CObservationLogHeader hdr_;
     CFastSLAMParticles pf_;
@@ -66,24 +58,22 @@ private:
 }  // namespace
 
 std::unique_ptr<CSlamEngine> makeEngine(const TSlamConfig& cfg,
-                                        const rfir::obs::CObservationLogHeader& hdr)
-{
-    switch (cfg.method())
-    {
-        case TMethod::FastSLAM: return std::make_unique<CFastSLAMEngine>(cfg, hdr);
-        default: return makeTagMapEngine(cfg, hdr);
+                                        const rfir::obs::CObservationLogHeader& hdr) {
+    switch (cfg.method()) {
+        case TMethod::FastSLAM:
+            return std::make_unique<CFastSLAMEngine>(cfg, hdr);
+        default:
+            return makeTagMapEngine(cfg, hdr);
     }
 }
 
 TSlamRun runEngine(CSlamEngine& engine, const mrpt::poses::CPose2D& start,
                    const std::vector<TSlamInput>& inputs,
-                   const std::function<void(size_t)>& progress)
-{
+                   const std::function<void(size_t)>& progress) {
     using clock = std::chrono::steady_clock;
     TSlamRun run;
     engine.reset(start);
-    for (size_t i = 0; i < inputs.size(); i++)
-    {
+    for (size_t i = 0; i < inputs.size(); i++) {
         const auto t0 = clock::now();
         engine.step(inputs[i]);
         const double dt = std::chrono::duration<double>(clock::now() - t0).count();

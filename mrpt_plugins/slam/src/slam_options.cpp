@@ -6,12 +6,10 @@
 #include <algorithm>
 #include <cctype>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 using PF = mrpt::bayes::CParticleFilter;
 
-TMethod parseMethod(const std::string& name)
-{
+TMethod parseMethod(const std::string& name) {
     if (name == "pf") return TMethod::PF;
     if (name == "ps") return TMethod::PS;
     if (name == "fastslam") return TMethod::FastSLAM;
@@ -20,19 +18,20 @@ TMethod parseMethod(const std::string& name)
                "unknown method '" + name + "' (pf, ps, fastslam or odometry)");
 }
 
-std::string methodName(TMethod m)
-{
-    switch (m)
-    {
-        case TMethod::PF: return "pf";
-        case TMethod::PS: return "ps";
-        case TMethod::FastSLAM: return "fastslam";
-        default: return "odometry";
+std::string methodName(TMethod m) {
+    switch (m) {
+        case TMethod::PF:
+            return "pf";
+        case TMethod::PS:
+            return "ps";
+        case TMethod::FastSLAM:
+            return "fastslam";
+        default:
+            return "odometry";
     }
 }
 
-PF::TParticleResamplingAlgorithm parseResampling(const std::string& name)
-{
+PF::TParticleResamplingAlgorithm parseResampling(const std::string& name) {
     std::string n = name;
     std::transform(n.begin(), n.end(), n.begin(), ::tolower);
     if (n.rfind("pr", 0) == 0) n = n.substr(2);
@@ -46,20 +45,21 @@ PF::TParticleResamplingAlgorithm parseResampling(const std::string& name)
                    "prMultinomial, prResidual, prStratified, prSystematic)");
 }
 
-std::string resamplingName(PF::TParticleResamplingAlgorithm r)
-{
-    switch (r)
-    {
-        case PF::prMultinomial: return "multinomial";
-        case PF::prResidual: return "residual";
-        case PF::prStratified: return "stratified";
-        default: return "systematic";
+std::string resamplingName(PF::TParticleResamplingAlgorithm r) {
+    switch (r) {
+        case PF::prMultinomial:
+            return "multinomial";
+        case PF::prResidual:
+            return "residual";
+        case PF::prStratified:
+            return "stratified";
+        default:
+            return "systematic";
     }
 }
 
 void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                      const std::string& s)
-{
+                                      const std::string& s) {
     method = c.read_string(s, "method", method);
     parseMethod(method);
     const int m = c.read_int(s, "robot_particles", int(robot_particles));
@@ -80,8 +80,7 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 }
 
 void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                    const std::string& s) const
-{
+                                    const std::string& s) const {
     c.write(s, "method", method, -1, -1, "pf | ps | fastslam | odometry");
     c.write(s, "robot_particles", int(robot_particles), -1, -1, "robot particles M");
     c.write(s, "resampling", resampling, -1, -1,
@@ -94,8 +93,7 @@ void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
             "pf/ps weigh-first: tags updated at the posterior or predicted mean");
 }
 
-PF::TParticleFilterOptions TSlamOptions::pfOptions() const
-{
+PF::TParticleFilterOptions TSlamOptions::pfOptions() const {
     PF::TParticleFilterOptions o;
     o.PF_algorithm = PF::pfStandardProposal;
     o.resamplingMethod = parseResampling(resampling);

@@ -10,22 +10,18 @@
 #include <cmath>
 #include <sstream>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 using rfir::maps::CRFIDTagParticleMap;
 
-struct TTagMapSettings
-{
+struct TTagMapSettings {
     CRFIDTagParticleMap::TInsertionOptions insertion;
     CRFIDTagParticleMap::TLikelihoodOptions likelihood;
 };
 
-namespace
-{
+namespace {
 /** Kidnap check: the best particle's mean log-likelihood per detection of a
  * landmark the map already has, and those detections as anchors. */
-struct TConsistency
-{
+struct TConsistency {
     std::optional<double> bestMeanLogLik;
     std::vector<TAnchor> anchors;
 };
@@ -36,8 +32,7 @@ struct TConsistency
  * that is merely poorly known). */
 double rbConsistencyLogLik(const mrpt::poses::CPose2D& sensor,
                            const CRFIDTagParticleMap::TTagEntry& lm, const TDetection& d,
-                           const rfir::models::RangeBearingParams& rb)
-{
+                           const rfir::models::RangeBearingParams& rb) {
     const double a = sensor.phi() + d.b;
     const double px = sensor.x() + d.a * std::cos(a), py = sensor.y() + d.a * std::sin(a);
     const double var = rb.sigmaRange * rb.sigmaRange +
@@ -50,14 +45,12 @@ double rbConsistencyLogLik(const mrpt::poses::CPose2D& sensor,
 
 TConsistency checkConsistency(const CRFIDTagParticleMap& map,
                               const CRobotPoseParticles& pf,
-                              const std::vector<TDetection>& dets)
-{
+                              const std::vector<TDetection>& dets) {
     TConsistency c;
     std::vector<const CRFIDTagParticleMap::TTagEntry*> known;
-    for (const auto& d : dets)
-    {
-        const auto* e = d.kind == TDetection::Kind::RFID ? map.getTag(d.id)
-                                                         : map.getLandmark(d.id);
+    for (const auto& d : dets) {
+        const auto* e =
+            d.kind == TDetection::Kind::RFID ? map.getTag(d.id) : map.getLandmark(d.id);
         if (!e) continue;
         known.push_back(e);
         c.anchors.push_back({d, e->estimate.mean.x, e->estimate.mean.y});
@@ -65,12 +58,10 @@ TConsistency checkConsistency(const CRFIDTagParticleMap& map,
     if (known.empty()) return c;
     const auto& rb = map.likelihoodOptions.rangeBearing;
     double best = -1e300;
-    for (const auto& p : pf.m_particles)
-    {
+    for (const auto& p : pf.m_particles) {
         const mrpt::math::TPose2D pose = p.d.asTPose();
         double ll = 0;
-        for (size_t k = 0; k < known.size(); k++)
-        {
+        for (size_t k = 0; k < known.size(); k++) {
             const TDetection& d = c.anchors[k].det;
             if (d.kind == TDetection::Kind::RFID)
                 ll += map.detectionLogLikelihood(*known[k], pose,
@@ -84,17 +75,14 @@ TConsistency checkConsistency(const CRFIDTagParticleMap& map,
     return c;
 }
 
-class CTagMapEngine : public CSlamEngine
-{
-public:
+class CTagMapEngine : public CSlamEngine {
+  public:
     CTagMapEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
-        : cfg_(c), hdr_(h), kidnap_(c.kidnap)
-    {
+        : cfg_(c), hdr_(h), kidnap_(c.kidnap) {
         filter_.m_options = c.slam.pfOptions();
         rng_.randomize(c.seed + 7919);
     }
-    void reset(const mrpt::poses::CPose2D& start) override
-    {
+    void reset(const mrpt::poses::CPose2D& start) override {
         map_.clear();
         map_.insertionOptions = cfg_.tagmap->insertion;
         map_.likelihoodOptions = cfg_.tagmap->likelihood;
@@ -110,11 +98,10 @@ public:
     std::vector<TLandmarkOut> landmarks() const override;
     size_t resets() const override { return kidnap_.resets(); }
 
-private:
+  private:
     void beforeWeighing(const std::vector<TDetection>& dets, bool literal,
                         const mrpt::poses::CPose2D& predicted);
-    void insert(const mrpt::poses::CPose2D& at)
-    {
+    void insert(const mrpt::poses::CPose2D& at) {
         for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
     }
 
@@ -131,15 +118,16 @@ private:
 };
 
 void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool literal,
-                                   const mrpt::poses::CPose2D& predicted)
-{
-    const TConsistency c = checkConsistency(map_, pf_, dets);
+                                   const mrpt::poses::CPose2D& predicted) {
+    // With recovery off the per-particle consistency pass decides nothing
+    // (the monitor ignores it): skip it, it costs a likelihood per particle.
+    const TConsistency c =
+        cfg_.kidnap.enabled ? checkConsistency(map_, pf_, dets) : TConsistency{};
     const bool reset = kidnap_.update(c.bestMeanLogLik);
     // While the detections contradict every particle, the map is not updated
     // (it would be updated from a wrong pose).
     mapThisStep_ = !reset && !kidnap_.suspicious();
-    if (reset)
-    {
+    if (reset) {
         const size_t M = pf_.m_particles.size();
         const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
         const auto poses =
@@ -150,22 +138,18 @@ void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool lit
     if (literal && mapThisStep_) insert(predicted);
 }
 
-void CTagMapEngine::step(const TSlamInput& in)
-{
+void CTagMapEngine::step(const TSlamInput& in) {
     obs_.clear();
     std::vector<TDetection> dets;
-    if (in.rfid)
-    {
+    if (in.rfid) {
         obs_.push_back(in.rfid);
         appendDetections(*in.rfid, dets);
     }
-    if (in.rb)
-    {
+    if (in.rb) {
         obs_.push_back(in.rb);
         appendDetections(*in.rb, hdr_, dets);
     }
-    if (cfg_.method() == TMethod::Odometry)
-    {
+    if (cfg_.method() == TMethod::Odometry) {
         // Dead reckoning: map the tags from the odometry poses, no correction.
         if (in.odometryIncrement) pose_ = pose_ + *in.odometryIncrement;
         insert(pose_);
@@ -177,7 +161,8 @@ void CTagMapEngine::step(const TSlamInput& in)
     };
     pf_.setWeighing(&map_, obs_);
     mrpt::obs::CActionCollection acts;
-    if (in.odometryIncrement) acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
+    if (in.odometryIncrement)
+        acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
     filter_.executeOn(pf_, &acts, nullptr);
     pf_.afterMotion = nullptr;
     pf_.setWeighing(nullptr, {});
@@ -186,8 +171,7 @@ void CTagMapEngine::step(const TSlamInput& in)
         insert(cfg_.slam.tag_update_pose == "predicted" ? pf_.predictedMean() : pose_);
 }
 
-std::vector<TLandmarkOut> CTagMapEngine::landmarks() const
-{
+std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {
     std::vector<TLandmarkOut> out;
     auto add = [&](const CRFIDTagParticleMap::TTagEntry* e, bool isTag) {
         const auto& est = e->estimate;
@@ -201,18 +185,18 @@ std::vector<TLandmarkOut> CTagMapEngine::landmarks() const
 }
 }  // namespace
 
-std::set<std::string> tagMapSections() { return {"tagmap", "tagmap_likelihood"}; }
+std::set<std::string> tagMapSections() {
+    return {"tagmap", "tagmap_likelihood"};
+}
 
-std::string joinSections(const std::set<std::string>& s)
-{
+std::string joinSections(const std::set<std::string>& s) {
     std::string r;
     for (const auto& x : s) r += (r.empty() ? "" : ", ") + x;
     return r;
 }
 
-std::shared_ptr<TTagMapSettings> loadTagMapOptions(const mrpt::config::CConfigFileBase& ini,
-                                                   TMethod method)
-{
+std::shared_ptr<TTagMapSettings> loadTagMapOptions(
+    const mrpt::config::CConfigFileBase& ini, TMethod method) {
     auto s = std::make_shared<TTagMapSettings>();
     s->insertion.loadFromConfigFile(ini, "tagmap");
     s->likelihood.loadFromConfigFile(ini, "tagmap_likelihood");
@@ -223,8 +207,7 @@ std::shared_ptr<TTagMapSettings> loadTagMapOptions(const mrpt::config::CConfigFi
     return s;
 }
 
-std::string dumpTagMapOptions(const std::shared_ptr<TTagMapSettings>& s, uint64_t seed)
-{
+std::string dumpTagMapOptions(const std::shared_ptr<TTagMapSettings>& s, uint64_t seed) {
     if (!s) return {};
     auto ins = s->insertion;
     ins.seed = seed;  // the map's draws follow the run's --seed
@@ -236,9 +219,8 @@ std::string dumpTagMapOptions(const std::shared_ptr<TTagMapSettings>& s, uint64_
     return o.str();
 }
 
-std::unique_ptr<CSlamEngine> makeTagMapEngine(const TSlamConfig& cfg,
-                                              const rfir::obs::CObservationLogHeader& hdr)
-{
+std::unique_ptr<CSlamEngine> makeTagMapEngine(
+    const TSlamConfig& cfg, const rfir::obs::CObservationLogHeader& hdr) {
     return std::make_unique<CTagMapEngine>(cfg, hdr);
 }
 

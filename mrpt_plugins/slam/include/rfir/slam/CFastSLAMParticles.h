@@ -17,17 +17,14 @@
 #include <string>
 #include <vector>
 
-namespace rfir::slam
-{
-struct TFastSLAMParticle
-{
+namespace rfir::slam {
+struct TFastSLAMParticle {
     mrpt::poses::CPose2D pose;
     CPersistentVector<TLandmarkEKF> landmarks;  //!< by CFastSLAMParticles index
 };
 
 /** INI section [fastslam]. */
-struct TFastSLAMOptions : public mrpt::config::CLoadableOptions
-{
+struct TFastSLAMOptions : public mrpt::config::CLoadableOptions {
     TGaussianMeasurementParams meas;
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;
@@ -41,9 +38,9 @@ class CFastSLAMParticles
       public mrpt::bayes::CParticleFilterDataImpl<
           CFastSLAMParticles,
           mrpt::bayes::CParticleFilterData<
-              TFastSLAMParticle, mrpt::bayes::particle_storage_mode::VALUE>::CParticleList>
-{
-public:
+              TFastSLAMParticle,
+              mrpt::bayes::particle_storage_mode::VALUE>::CParticleList> {
+  public:
     explicit CFastSLAMParticles(const TFastSLAMOptions& o = {}) : model_(o.meas) {}
 
     /** M particles at `start`, with Gaussian spread (std) in xy and heading. */
@@ -53,8 +50,7 @@ public:
 
     /** Weighted mean of the robot particles. */
     mrpt::poses::CPose2D meanPose() const;
-    struct TLandmarkEstimate
-    {
+    struct TLandmarkEstimate {
         std::string id;
         bool isTag;  //!< RFID tag, else range-bearing landmark
         Eigen::Vector2d mean;
@@ -66,13 +62,13 @@ public:
     /** Mean log-likelihood of the last step's detections (best particle). */
     double lastMaxLogLik() const { return lastMaxLogLik_; }
 
-protected:
+  protected:
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,
         const mrpt::obs::CSensoryFrame* observation,
         const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o) override;
 
-private:
+  private:
     size_t indexOf(const TDetection& d);
     double updateParticle(TFastSLAMParticle& p, const std::vector<size_t>& idx);
 

@@ -14,8 +14,7 @@
 #include <functional>
 #include <vector>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 using TPoseParticleData =
     mrpt::bayes::CParticleFilterData<mrpt::poses::CPose2D,
                                      mrpt::bayes::particle_storage_mode::VALUE>;
@@ -23,17 +22,15 @@ using TPoseParticleData =
 class CRobotPoseParticles
     : public TPoseParticleData,
       public mrpt::bayes::CParticleFilterDataImpl<CRobotPoseParticles,
-                                                  TPoseParticleData::CParticleList>
-{
-public:
+                                                  TPoseParticleData::CParticleList> {
+  public:
     /** M particles at `start`, with Gaussian spread (std) in xy and heading. */
     void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi);
 
     /** The map and observations the next executeOn step weighs with (none:
      * motion only). The map must outlive the step. */
     void setWeighing(const mrpt::maps::CMetricMap* map,
-                     std::vector<mrpt::obs::CObservation::Ptr> obs)
-    {
+                     std::vector<mrpt::obs::CObservation::Ptr> obs) {
         map_ = map;
         obs_ = std::move(obs);
     }
@@ -51,13 +48,13 @@ public:
      * resetting). */
     void replacePose(size_t i, const mrpt::poses::CPose2D& p);
 
-protected:
+  protected:
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,
         const mrpt::obs::CSensoryFrame* observation,
         const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o) override;
 
-private:
+  private:
     const mrpt::maps::CMetricMap* map_ = nullptr;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<double> lastLL_;

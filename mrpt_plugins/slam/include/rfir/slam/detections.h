@@ -11,19 +11,16 @@
 #include <string>
 #include <vector>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 /** One detection of an identified landmark. */
-struct TDetection
-{
-    enum class Kind
-    {
+struct TDetection {
+    enum class Kind {
         RFID,         //!< tag inside a reader's area: (x, y) = reader centre, robot frame
         RangeBearing  //!< (range, bearing) from `sensor` (a pose in the robot frame)
     };
     Kind kind = Kind::RFID;
-    std::string id;  //!< tag ID, or range-bearing landmark name
-    double a = 0, b = 0;  //!< RFID: reader centre x, y; RB: range, bearing
+    std::string id;               //!< tag ID, or range-bearing landmark name
+    double a = 0, b = 0;          //!< RFID: reader centre x, y; RB: range, bearing
     double halfX = 0, halfY = 0;  //!< RFID: half sizes of the detection area
     mrpt::poses::CPose2D sensor;  //!< RB: sensor pose on the robot
     double stdRange = 0, stdBearing = 0;  //!< RB: from the observation, 0 if unknown

@@ -8,8 +8,7 @@
 #include <set>
 #include <string>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 /** The keys an options struct writes with saveToConfigFile: by construction
  * the keys its loadFromConfigFile understands. */
 std::set<std::string> knownKeysOf(const mrpt::config::CLoadableOptions& opts,

@@ -16,11 +16,9 @@
 #include <optional>
 #include <vector>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 /** INI section [kidnap]. */
-struct TKidnapOptions : public mrpt::config::CLoadableOptions
-{
+struct TKidnapOptions : public mrpt::config::CLoadableOptions {
     bool enabled = true;
     double collapse_loglik = -4.0;  //!< per known detection, best particle
     unsigned collapse_steps = 3;
@@ -37,15 +35,13 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions
 };
 
 /** A detection of a landmark whose position the map already knows. */
-struct TAnchor
-{
+struct TAnchor {
     TDetection det;
     double x = 0, y = 0;  //!< landmark estimate, world frame
 };
 
-class CKidnapMonitor
-{
-public:
+class CKidnapMonitor {
+  public:
     explicit CKidnapMonitor(const TKidnapOptions& o = {}) : o_(o) {}
     /** One step: the best particle's mean log-likelihood per known
      * detection (nullopt: no known landmark detected, nothing learnt).
@@ -56,7 +52,7 @@ public:
     size_t resets() const { return resets_; }
     const TKidnapOptions& options() const { return o_; }
 
-private:
+  private:
     TKidnapOptions o_;
     unsigned bad_ = 0;
     size_t resets_ = 0;

@@ -9,15 +9,13 @@
 
 #include <rfir/slam/detections.h>
 
-#include <Eigen/Dense>
 #include <mrpt/poses/CPose2D.h>
+#include <Eigen/Dense>
 
 #include <cstddef>
 
-namespace rfir::slam
-{
-struct TLandmarkEKF
-{
+namespace rfir::slam {
+struct TLandmarkEKF {
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     Eigen::Matrix2d cov = Eigen::Matrix2d::Identity();
 
@@ -25,35 +23,31 @@ struct TLandmarkEKF
     TLandmarkEKF(const TLandmarkEKF& o) : mean(o.mean), cov(o.cov) { ++copyCount(); }
     TLandmarkEKF& operator=(const TLandmarkEKF& o) = default;
     /** EKFs copied so far (the copy-on-write test counts them). */
-    static size_t& copyCount()
-    {
+    static size_t& copyCount() {
         static size_t n = 0;
         return n;
     }
 };
 
 /** Measurement noise of the Gaussian models (INI section [fastslam]). */
-struct TGaussianMeasurementParams
-{
+struct TGaussianMeasurementParams {
     /** RFID: std of the tag position about the reader centre, as a fraction
      * of the half side (1/sqrt(3) = 0.577 is the std of a uniform square). */
     double rfidStdFactor = 0.577;
-    double rbStdRange = 0.01;    //!< m, used when the observation gives none
+    double rbStdRange = 0.01;       //!< m, used when the observation gives none
     double rbStdBearing = 0.05236;  //!< rad (3 deg), likewise
 };
 
 /** A detection linearised at a landmark estimate. */
-struct TLinearMeasurement
-{
+struct TLinearMeasurement {
     Eigen::Vector2d innovation;  //!< z - h(mean), bearing wrapped to (-pi, pi]
     Eigen::Matrix2d H;           //!< dh/dm
     Eigen::Matrix2d R;           //!< measurement covariance
 };
 
 /** Gaussian measurement model for one detection seen from `robot`. */
-class CGaussianLandmarkModel
-{
-public:
+class CGaussianLandmarkModel {
+  public:
     explicit CGaussianLandmarkModel(const TGaussianMeasurementParams& p) : p_(p) {}
 
     /** Linearisation of detection d at landmark position m. */
@@ -63,7 +57,7 @@ public:
     TLandmarkEKF initialize(const TDetection& d, const mrpt::poses::CPose2D& robot) const;
     Eigen::Matrix2d noise(const TDetection& d) const;
 
-private:
+  private:
     TGaussianMeasurementParams p_;
 };
 

@@ -11,17 +11,15 @@
 
 #include <optional>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 /** INI section [motion]: the std of an increment (d: its length, |phi|: its
  * turn) is a1*d + a2*|phi| + min_std_xy in x and y, a3*d + a4*|phi| +
  * min_std_phi in heading (MRPT's Gaussian model). */
-struct TMotionOptions : public mrpt::config::CLoadableOptions
-{
-    double a1 = 0.05;         //!< m of xy std per m travelled
-    double a2 = 0.001;        //!< m of xy std per rad turned
-    double a3 = 0.02;         //!< rad of heading std per m travelled
-    double a4 = 0.02;         //!< rad of heading std per rad turned
+struct TMotionOptions : public mrpt::config::CLoadableOptions {
+    double a1 = 0.05;            //!< m of xy std per m travelled
+    double a2 = 0.001;           //!< m of xy std per rad turned
+    double a3 = 0.02;            //!< rad of heading std per m travelled
+    double a4 = 0.02;            //!< rad of heading std per rad turned
     double min_std_xy = 0.001;   //!< m
     double min_std_phi = 0.002;  //!< rad
 

@@ -10,23 +10,19 @@
 #include <cstddef>
 #include <memory>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 template <class T>
-class CPersistentVector
-{
-public:
+class CPersistentVector {
+  public:
     using ElemPtr = std::shared_ptr<const T>;
     static constexpr unsigned BITS = 4;
     static constexpr size_t FANOUT = size_t(1) << BITS;
 
     /** Element i, or nullptr when never set. */
-    const T* get(size_t i) const
-    {
+    const T* get(size_t i) const {
         if (!root_ || i >= capacity()) return nullptr;
         const Node* n = root_.get();
-        for (unsigned shift = shift_; shift > 0; shift -= BITS)
-        {
+        for (unsigned shift = shift_; shift > 0; shift -= BITS) {
             n = n->kids[(i >> shift) & (FANOUT - 1)].get();
             if (!n) return nullptr;
         }
@@ -34,31 +30,26 @@ public:
     }
 
     /** Replaces element i in this version only: copies the nodes on its path. */
-    void set(size_t i, ElemPtr v)
-    {
+    void set(size_t i, ElemPtr v) {
         while (i >= capacity()) grow();
         root_ = setRec(root_, shift_, i, std::move(v));
     }
     /** Nodes allocated so far by all vectors of this type (for tests). */
-    static size_t& nodeAllocations()
-    {
+    static size_t& nodeAllocations() {
         static size_t n = 0;
         return n;
     }
 
-private:
-    struct Node
-    {
+  private:
+    struct Node {
         std::array<std::shared_ptr<const Node>, FANOUT> kids;
         std::array<ElemPtr, FANOUT> vals;
     };
     using NodePtr = std::shared_ptr<const Node>;
 
     size_t capacity() const { return root_ ? size_t(1) << (shift_ + BITS) : 0; }
-    void grow()
-    {
-        if (!root_)
-        {
+    void grow() {
+        if (!root_) {
             root_ = std::make_shared<Node>();
             shift_ = 0;
             return;
@@ -68,8 +59,7 @@ private:
         root_ = r;
         shift_ += BITS;
     }
-    static NodePtr setRec(const NodePtr& n, unsigned shift, size_t i, ElemPtr v)
-    {
+    static NodePtr setRec(const NodePtr& n, unsigned shift, size_t i, ElemPtr v) {
         auto c = n ? std::make_shared<Node>(*n) : std::make_shared<Node>();
         ++nodeAllocations();
         const size_t k = (i >> shift) & (FANOUT - 1);

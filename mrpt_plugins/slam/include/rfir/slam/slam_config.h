@@ -14,15 +14,13 @@
 #include <optional>
 #include <string>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 struct TTagMapSettings;  // tagmap_engine.h
 
-struct TSlamConfig
-{
-    TSlamOptions slam;       //!< [slam]
-    TMotionOptions motion;   //!< [motion]
-    TKidnapOptions kidnap;   //!< [kidnap]
+struct TSlamConfig {
+    TSlamOptions slam;          //!< [slam]
+    TMotionOptions motion;      //!< [motion]
+    TKidnapOptions kidnap;      //!< [kidnap]
     TFastSLAMOptions fastslam;  //!< [fastslam]
     /** The tag map's options (PF-SLAM / PS-SLAM), see tagmap_engine.h. */
     std::shared_ptr<TTagMapSettings> tagmap;

@@ -14,11 +14,9 @@
 #include <string>
 #include <vector>
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 /** One sensing instant as the methods see it. */
-struct TSlamInput
-{
+struct TSlamInput {
     double t = 0;
     /** Odometry increment since the previous instant (none: not moved). */
     std::optional<mrpt::poses::CPose2D> odometryIncrement;
@@ -27,16 +25,14 @@ struct TSlamInput
 };
 
 /** A landmark estimate for map.txt. */
-struct TLandmarkOut
-{
+struct TLandmarkOut {
     bool isTag = true;  //!< RFID tag, else range-bearing landmark
     std::string id;
     double x = 0, y = 0, sx = 0, sy = 0;
 };
 
-class CSlamEngine
-{
-public:
+class CSlamEngine {
+  public:
     virtual ~CSlamEngine() = default;
     /** Starts at `start` (the rawlog's start pose or --start). */
     virtual void reset(const mrpt::poses::CPose2D& start) = 0;
@@ -53,8 +49,7 @@ std::unique_ptr<CSlamEngine> makeEngine(const TSlamConfig& cfg,
                                         const rfir::obs::CObservationLogHeader& hdr);
 
 /** A run's estimated path and timing. */
-struct TSlamRun
-{
+struct TSlamRun {
     std::vector<std::pair<double, mrpt::poses::CPose2D>> path;  //!< (t, pose) per step
     std::vector<TLandmarkOut> map;
     double totalTime = 0, meanStepTime = 0, maxStepTime = 0;  //!< s, of step() calls

@@ -8,10 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace rfir::slam
-{
-enum class TMethod
-{
+namespace rfir::slam {
+enum class TMethod {
     PF,        //!< PF-SLAM: robot particle filter + per-tag particle filters
     PS,        //!< PS-SLAM: robot particle filter + per-tag fixed-lag smoothers
     FastSLAM,  //!< FastSLAM 1.0 baseline: one EKF per tag per robot particle
@@ -27,8 +25,7 @@ mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm parseResampling(
 std::string resamplingName(mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm r);
 
 /** INI section [slam]. */
-struct TSlamOptions : public mrpt::config::CLoadableOptions
-{
+struct TSlamOptions : public mrpt::config::CLoadableOptions {
     std::string method = "pf";
     unsigned robot_particles = 500;  //!< M (SPEC section 4)
     std::string resampling = "systematic";
@@ -58,17 +55,14 @@ mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
 }  // namespace rfir::slam
 
 #include <cmath>
-namespace rfir::slam
-{
+namespace rfir::slam {
 template <class GetPose>
 mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
-                                      GetPose get)
-{
+                                      GetPose get) {
     double mx = -1e300;
     for (size_t i = 0; i < n; i++) mx = std::max(mx, logw[i]);
     double sw = 0, x = 0, y = 0, c = 0, s = 0;
-    for (size_t i = 0; i < n; i++)
-    {
+    for (size_t i = 0; i < n; i++) {
         const double w = std::exp(logw[i] - mx);
         const mrpt::poses::CPose2D& p = get(i);
         sw += w;

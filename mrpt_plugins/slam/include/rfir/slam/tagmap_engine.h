@@ -15,13 +15,11 @@
 #include <set>
 #include <string>
 
-namespace rfir::obs
-{
+namespace rfir::obs {
 class CObservationLogHeader;
 }
 
-namespace rfir::slam
-{
+namespace rfir::slam {
 class CSlamEngine;
 
 /** INI sections of the tag map: [tagmap] (insertion: estimator, particles,
@@ -31,12 +29,12 @@ std::string joinSections(const std::set<std::string>& s);
 
 /** The tag map's options plus how the robot filter uses the map. */
 struct TTagMapSettings;
-std::shared_ptr<TTagMapSettings> loadTagMapOptions(const mrpt::config::CConfigFileBase& ini,
-                                                   TMethod method);
+std::shared_ptr<TTagMapSettings> loadTagMapOptions(
+    const mrpt::config::CConfigFileBase& ini, TMethod method);
 /** The [tagmap] and [tagmap_likelihood] sections as INI text. */
 std::string dumpTagMapOptions(const std::shared_ptr<TTagMapSettings>& s, uint64_t seed);
 
-std::unique_ptr<CSlamEngine> makeTagMapEngine(const TSlamConfig& cfg,
-                                              const rfir::obs::CObservationLogHeader& hdr);
+std::unique_ptr<CSlamEngine> makeTagMapEngine(
+    const TSlamConfig& cfg, const rfir::obs::CObservationLogHeader& hdr);
 
 }  // namespace rfir::slam

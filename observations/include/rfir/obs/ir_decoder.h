@@ -2,6 +2,7 @@
  * FFT (textlog.md `ir_raw`; thesis 5.2). */
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

@@ -32,6 +32,12 @@ struct TBenchOptions
 /** Heap bytes in use (glibc mallinfo2: uordblks + hblkhd, all arenas). */
 size_t heapInUse();
 
+/** CPU time of the calling thread (s): unlike the wall clock, it does not
+ * count the time other processes on a shared machine take the core. */
+double threadCpuSeconds();
+/** Wall-clock seconds (steady). */
+double wallSeconds();
+
 /** One method at one (M, N). */
 struct TCaseResult
 {
@@ -40,7 +46,8 @@ struct TCaseResult
     bool skipped = false;
     std::string skipReason;
     size_t updates = 0;
-    double medianUs = 0, meanUs = 0, p90Us = 0;  //!< per timed update
+    double medianUs = 0, meanUs = 0, p90Us = 0;  //!< thread CPU time per timed update
+    double wallMedianUs = 0;  //!< wall-clock median (includes preemption)
     double floorRatio = 0;     //!< median / floor median at the same M
     double vsPsRatio = 0;      //!< median / PS-SLAM median at the same (M, N)
     size_t stateBytes = 0;     //!< heap in use by the state after the timed updates
@@ -53,7 +60,8 @@ struct TCaseResult
 struct TFloorResult
 {
     size_t M = 0;
-    double medianUs = 0, meanUs = 0;
+    double medianUs = 0, meanUs = 0;  //!< thread CPU time
+    double wallMedianUs = 0;
 };
 
 /** The whole offline PS-SLAM run over a simulated floor. */
@@ -65,7 +73,8 @@ struct TRealtimeResult
     double simSeconds = 0;  //!< robot time covered
     size_t steps = 0, tagsInWorld = 0, tagsMapped = 0, detections = 0;
     double simulateSeconds = 0;  //!< simulator (not counted in the speed)
-    double slamSeconds = 0;      //!< every engine step, end to end
+    double slamSeconds = 0;      //!< every engine step, end to end (thread CPU time)
+    double slamWallSeconds = 0;  //!< the same on the wall clock
     double speedup = 0;          //!< simSeconds / slamSeconds
 };
 
@@ -82,6 +91,7 @@ struct TBenchReport
 {
     TBenchOptions options;
     std::string host;  //!< CPU model and core count
+    double loadBefore = 0, loadAfter = 0;  //!< 1-minute load average
     std::vector<TFloorResult> floor;
     std::vector<TCaseResult> sweepM, sweepN;
     std::vector<TRealtimeResult> realtime;
@@ -106,6 +116,8 @@ void evaluate(TBenchReport& r);
 
 void printTable(const TBenchReport& r, std::ostream& out);
 std::string toJson(const TBenchReport& r);
+/** The results as Markdown tables (for docs/benchmark.md). */
+std::string toMarkdown(const TBenchReport& r);
 /** bench_time_vs_M.png, bench_time_vs_N.png, bench_memory_vs_N.png in dir. */
 void writePlots(const TBenchReport& r, const std::string& dir);
 

@@ -17,7 +17,6 @@ namespace rfir::bench
 {
 TFloorResult runFloor(const TBenchOptions& o, size_t M)
 {
-    using Clock = std::chrono::steady_clock;
     mrpt::random::getRandomGenerator().randomize(uint32_t(o.seed));
     rfir::slam::TMotionOptions motion;
     const auto mv = rfir::slam::makeMovement(mrpt::poses::CPose2D(0.005, 0, 0), motion);
@@ -26,12 +25,12 @@ TFloorResult runFloor(const TBenchOptions& o, size_t M)
     const mrpt::math::TPoint2D tag(0.15, 0.0);
     std::vector<mrpt::poses::CPose2D> poses(M);
     std::vector<double> logW(M, 0.0);
-    std::vector<double> us;
+    std::vector<double> us, wall;
     const size_t reps = o.warmupUpdates + o.timedUpdates;
     double sink = 0;
     for (size_t k = 0; k < reps; k++)
     {
-        const auto t0 = Clock::now();
+        const double w0 = wallSeconds(), c0 = threadCpuSeconds();
         mv.prepareFastDrawSingleSamples();
         mrpt::poses::CPose2D inc;
         for (size_t i = 0; i < M; i++)
@@ -40,16 +39,18 @@ TFloorResult runFloor(const TBenchOptions& o, size_t M)
             poses[i] = poses[i] + inc;
             logW[i] += det.logLikelihood(poses[i].asTPose(), reader, tag);
         }
-        const double dt = std::chrono::duration<double>(Clock::now() - t0).count();
-        if (k >= o.warmupUpdates) us.push_back(1e6 * dt);
+        const double dt = threadCpuSeconds() - c0, dw = wallSeconds() - w0;
+        if (k >= o.warmupUpdates) us.push_back(1e6 * dt), wall.push_back(1e6 * dw);
         // Keep the particles near the origin so the likelihood stays in range.
         if (k % 2 == 1) std::fill(poses.begin(), poses.end(), mrpt::poses::CPose2D());
         sink += logW[k % M];
     }
     std::sort(us.begin(), us.end());
+    std::sort(wall.begin(), wall.end());
     TFloorResult r;
     r.M = M;
     r.medianUs = us.empty() ? 0 : us[us.size() / 2];
+    r.wallMedianUs = wall.empty() ? 0 : wall[wall.size() / 2];
     r.meanUs = us.empty() ? 0 : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
     if (sink == 12345.678) r.meanUs += 0;  // keeps the loop from being optimised away
     return r;

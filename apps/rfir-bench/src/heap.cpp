@@ -1,6 +1,9 @@
 #include "bench.h"
 
 #include <malloc.h>
+#include <time.h>
+
+#include <chrono>
 
 namespace rfir::bench
 {
@@ -11,5 +14,18 @@ size_t heapInUse()
     // allocator's cached free memory that RSS would include.
     const struct mallinfo2 mi = mallinfo2();
     return mi.uordblks + mi.hblkhd;
+}
+
+double threadCpuSeconds()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+double wallSeconds()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 }  // namespace rfir::bench

@@ -48,6 +48,14 @@ std::string hostDescription()
     return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
 }
 
+double loadAverage()
+{
+    std::ifstream f("/proc/loadavg");
+    double l = 0;
+    f >> l;
+    return l;
+}
+
 std::vector<size_t> parseList(const std::string& opt, const std::string& s)
 {
     std::vector<size_t> v;
@@ -131,6 +139,8 @@ int main(int argc, char** argv)
                                "updates; a 60 s whole run)", cmd);
         TCLAP::ValueArg<std::string> json("", "json", "write the results as JSON", false, "",
                                           "FILE", cmd);
+        TCLAP::ValueArg<std::string> markdown("", "markdown", "write the results as Markdown "
+                                              "tables", false, "", "FILE", cmd);
         TCLAP::ValueArg<std::string> plots("", "plots", "write bench_*.png plots there",
                                            false, "", "DIR", cmd);
         TCLAP::ValueArg<std::string> ms("", "m", "robot particle counts (default "
@@ -179,12 +189,17 @@ int main(int argc, char** argv)
             throw std::invalid_argument("--plots: no folder '" + plots.getValue() + "'");
         r.host = hostDescription();
 
+        r.loadBefore = loadAverage();
         runAll(r);
+        r.loadAfter = loadAverage();
         evaluate(r);
         printTable(r, std::cout);
         if (json.isSet())
             rfir::common::writeFileAtomically(json.getValue(),
                                               [&](std::ostream& f) { f << toJson(r); });
+        if (markdown.isSet())
+            rfir::common::writeFileAtomically(markdown.getValue(),
+                                              [&](std::ostream& f) { f << toMarkdown(r); });
         if (plots.isSet()) writePlots(r, plots.getValue());
         return 0;
     }

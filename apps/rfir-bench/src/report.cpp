@@ -33,9 +33,9 @@ std::string row(const char* f, ...)
 void printCases(const char* title, const std::vector<TCaseResult>& v, std::ostream& out)
 {
     out << title << "\n"
-        << row("%-9s %6s %7s %10s %10s %10s %8s %8s %10s %10s %8s\n", "method", "M", "N",
-               "median_us", "p90_us", "mean_us", "x_floor", "x_PS", "state_MB", "peak_MB",
-               "build_s");
+        << row("%-9s %6s %7s %10s %10s %10s %10s %8s %8s %10s %10s %8s\n", "method", "M", "N",
+               "median_us", "p90_us", "mean_us", "wall_us", "x_floor", "x_PS", "state_MB",
+               "peak_MB", "build_s");
     for (const auto& c : v)
     {
         if (c.skipped)
@@ -44,9 +44,9 @@ void printCases(const char* title, const std::vector<TCaseResult>& v, std::ostre
                        c.skipReason.c_str());
             continue;
         }
-        out << row("%-9s %6zu %7zu %10.1f %10.1f %10.1f %8.2f %8.2f %10.2f %10.2f %8.2f\n",
+        out << row("%-9s %6zu %7zu %10.1f %10.1f %10.1f %10.1f %8.2f %8.2f %10.2f %10.2f %8.2f\n",
                    methodLabel(c.method), c.M, c.N, c.medianUs, c.p90Us, c.meanUs,
-                   c.floorRatio, c.vsPsRatio, c.stateBytes / 1e6, c.peakBytes / 1e6,
+                   c.wallMedianUs, c.floorRatio, c.vsPsRatio, c.stateBytes / 1e6, c.peakBytes / 1e6,
                    c.buildSeconds);
     }
     out << "\n";
@@ -62,6 +62,7 @@ void jsonCase(std::ostringstream& o, const TCaseResult& c)
     }
     o << ", \"skipped\": false, \"updates\": " << c.updates << ", \"median_us\": " << c.medianUs
       << ", \"p90_us\": " << c.p90Us << ", \"mean_us\": " << c.meanUs
+      << ", \"wall_median_us\": " << c.wallMedianUs
       << ", \"x_floor\": " << c.floorRatio << ", \"x_ps\": " << c.vsPsRatio
       << ", \"state_bytes\": " << c.stateBytes << ", \"peak_bytes\": " << c.peakBytes
       << ", \"build_s\": " << c.buildSeconds << ", \"landmarks\": " << c.tagsMapped << "}";
@@ -81,12 +82,15 @@ std::string jsonEscape(const std::string& s)
 
 void printTable(const TBenchReport& r, std::ostream& out)
 {
-    out << "rfir-bench on " << r.host << "; single thread; times per SLAM update, median of "
-        << r.options.timedUpdates << " (2 known tags read per update); memory = heap bytes "
-        << "in use by the state (glibc mallinfo2)\n\n";
+    out << "rfir-bench on " << r.host << " (load average " << row("%.1f", r.loadBefore)
+        << " before, " << row("%.1f", r.loadAfter) << " after); single thread; thread CPU "
+        << "time per SLAM update, median of " << r.options.timedUpdates
+        << " (2 known tags read per update; wall_us = wall-clock median); memory = heap "
+        << "bytes in use by the state (glibc mallinfo2)\n\n";
     out << "floor (motion noise draw + 1 detection likelihood per particle)\n"
-        << row("%6s %10s %10s\n", "M", "median_us", "mean_us");
-    for (const auto& f : r.floor) out << row("%6zu %10.2f %10.2f\n", f.M, f.medianUs, f.meanUs);
+        << row("%6s %10s %10s %10s\n", "M", "median_us", "mean_us", "wall_us");
+    for (const auto& f : r.floor)
+        out << row("%6zu %10.2f %10.2f %10.2f\n", f.M, f.medianUs, f.meanUs, f.wallMedianUs);
     out << "\n";
     printCases(("time and memory against M (N = " + std::to_string(r.options.fixedN) +
                 " tags mapped)")
@@ -97,12 +101,12 @@ void printTable(const TBenchReport& r, std::ostream& out)
                    .c_str(),
                r.sweepN, out);
     out << "whole offline runs\n"
-        << row("%-9s %6s %9s %7s %7s %7s %9s %10s %10s\n", "method", "M", "robot_s",
-               "steps", "tags", "mapped", "reads", "slam_s", "x_realtime");
+        << row("%-9s %6s %9s %7s %7s %7s %9s %10s %10s %10s\n", "method", "M", "robot_s",
+               "steps", "tags", "mapped", "reads", "slam_s", "wall_s", "x_realtime");
     for (const auto& x : r.realtime)
-        out << row("%-9s %6zu %9.0f %7zu %7zu %7zu %9zu %10.3f %10.0f\n",
+        out << row("%-9s %6zu %9.0f %7zu %7zu %7zu %9zu %10.3f %10.3f %10.0f\n",
                    methodLabel(x.method), x.M, x.simSeconds, x.steps, x.tagsInWorld,
-                   x.tagsMapped, x.detections, x.slamSeconds, x.speedup);
+                   x.tagsMapped, x.detections, x.slamSeconds, x.slamWallSeconds, x.speedup);
     out << "\ntargets\n";
     for (const auto& t : r.targets)
         out << (t.measured ? (t.pass ? "  PASS  " : "  FAIL  ") : "  n/a   ") << t.name
@@ -115,11 +119,14 @@ std::string toJson(const TBenchReport& r)
     o << std::setprecision(6) << "{\n  \"host\": \"" << jsonEscape(r.host)
       << "\",\n  \"seed\": " << r.options.seed << ",\n  \"quick\": "
       << (r.options.quick ? "true" : "false") << ",\n  \"timed_updates\": "
-      << r.options.timedUpdates << ",\n  \"memory_measure\": \"glibc mallinfo2 heap in use\""
+      << r.options.timedUpdates << ",\n  \"time_measure\": \"thread CPU time per update\""
+      << ",\n  \"load_before\": " << r.loadBefore << ",\n  \"load_after\": " << r.loadAfter
+      << ",\n  \"memory_measure\": \"glibc mallinfo2 heap in use\""
       << ",\n  \"floor\": [";
     for (size_t i = 0; i < r.floor.size(); i++)
         o << (i ? ", " : "") << "{\"M\": " << r.floor[i].M << ", \"median_us\": "
-          << r.floor[i].medianUs << ", \"mean_us\": " << r.floor[i].meanUs << "}";
+          << r.floor[i].medianUs << ", \"mean_us\": " << r.floor[i].meanUs
+          << ", \"wall_median_us\": " << r.floor[i].wallMedianUs << "}";
     const std::pair<const char*, const std::vector<TCaseResult>*> sweeps[] = {
         {"sweep_M", &r.sweepM}, {"sweep_N", &r.sweepN}};
     for (const auto& [name, v] : sweeps)
@@ -139,6 +146,7 @@ std::string toJson(const TBenchReport& r)
           << ", \"robot_seconds\": " << x.simSeconds << ", \"steps\": " << x.steps
           << ", \"tags_in_world\": " << x.tagsInWorld << ", \"tags_mapped\": " << x.tagsMapped
           << ", \"reads\": " << x.detections << ", \"slam_seconds\": " << x.slamSeconds
+          << ", \"slam_wall_seconds\": " << x.slamWallSeconds
           << ", \"x_realtime\": " << x.speedup << "}";
     }
     o << "],\n  \"targets\": [";

@@ -42,18 +42,23 @@ double percentile(std::vector<double> v, double q)
     return v[i];
 }
 
-/** Runs one step, tracking the heap's high-water mark. */
+/** Runs one step; samples the heap only when asked, because mallinfo2 walks
+ * the allocator's free lists: that costs milliseconds on a large heap and
+ * evicts the caches a following timed step would find warm. */
 struct TStepper
 {
     rfir::slam::CSlamEngine& engine;
     size_t base;
     size_t peak = 0;
+    double lastWall = 0;
+    void samplePeak() { peak = std::max(peak, heapInUse() - std::min(base, heapInUse())); }
+    /** Returns the step's thread CPU time; lastWall gets its wall time. */
     double step(const rfir::slam::TSlamInput& in)
     {
-        const auto t0 = Clock::now();
+        const double w0 = wallSeconds(), c0 = threadCpuSeconds();
         engine.step(in);
-        const double dt = std::chrono::duration<double>(Clock::now() - t0).count();
-        peak = std::max(peak, heapInUse() - std::min(base, heapInUse()));
+        const double dt = threadCpuSeconds() - c0;
+        lastWall = wallSeconds() - w0;
         return dt;
     }
 };
@@ -81,21 +86,28 @@ TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
         TStepper st{*engine, base};
         const auto t0 = Clock::now();
         for (size_t i = 0; i < drive.populationSteps(); i++)
+        {
             st.step(drive.populationStep(i));
+            if (i % 16 == 15) st.samplePeak();
+        }
+        st.samplePeak();
         r.buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
         for (size_t k = 0; k < o.warmupUpdates; k++) st.step(drive.timedStep(k));
-        std::vector<double> us;
+        std::vector<double> us, wall;
         for (size_t k = 0; k < o.timedUpdates; k++)
         {
             // Inputs are built outside the timed call.
             const auto in = drive.timedStep(o.warmupUpdates + k);
             us.push_back(1e6 * st.step(in));
+            wall.push_back(1e6 * st.lastWall);
             if (std::getenv("RFIR_BENCH_TRACE")) std::fprintf(stderr, "%zu %.1f\n", k, us.back());
         }
         r.updates = us.size();
         r.medianUs = percentile(us, 0.5);
         r.p90Us = percentile(us, 0.9);
+        r.wallMedianUs = percentile(wall, 0.5);
         r.meanUs = us.empty() ? 0 : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
+        st.samplePeak();
         r.stateBytes = heapInUse() - std::min(base, heapInUse());
         r.peakBytes = std::max(st.peak, r.stateBytes);
         r.tagsMapped = engine->landmarks().size();

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Runs the full benchmark (rfir-bench) and writes its results into the docs:
+# docs/img/bench_time_vs_M.png, bench_time_vs_N.png, bench_memory_vs_N.png,
+# the results section of docs/benchmark.md (between
+# the RESULTS markers). Builds rfir-bench first if needed. The full run takes
+# several minutes and needs about 8 GB of free memory (the N = 100,000 states).
+#
+#   bash scripts/bench.sh                 # full run, updates docs/
+#   bash scripts/bench.sh --quick         # smoke run (seconds), docs untouched
+#   bash scripts/bench.sh --out /tmp/b    # full run, results in /tmp/b only
+# Other options are passed to rfir-bench (see rfir-bench --help).
+# Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${RFIR_BUILD_DIR:-build}
+JOBS=${RFIR_JOBS:-$(nproc)}
+
+out=""
+quick=0
+args=()
+while (($#)); do
+  case "$1" in
+    --out) out="$2"; shift 2 ;;
+    --quick) quick=1; args+=(--quick); shift ;;
+    *) args+=("$1"); shift ;;
+  esac
+done
+
+if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+  cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$BUILD" -j"$JOBS" --target rfir-bench
+
+update_docs=0
+if [ -z "$out" ]; then
+  if [ $quick -eq 1 ]; then out=$(mktemp -d /tmp/rfir_bench_XXXXXX); else out=docs; update_docs=1; fi
+fi
+mkdir -p "$out/img"
+tmp=$(mktemp -d /tmp/rfir_bench_run_XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
+
+# The source tree's INIs (the build's copy is refreshed only at configure time).
+"$BUILD/bin/rfir-bench" --config-dir config_ini --json "$tmp/benchmark.json" \
+  --markdown "$tmp/results.md" --plots "$tmp" "${args[@]}" | tee "$tmp/table.txt"
+
+cp "$tmp"/bench_*.png "$out/img/"
+if [ $update_docs -eq 1 ]; then
+  cp "$tmp/benchmark.json" "$BUILD/benchmark.json"
+  doc=docs/benchmark.md
+  grep -q '^<!-- RESULTS BEGIN' "$doc" || { echo "[bench] $doc has no RESULTS markers" >&2; exit 1; }
+  # Replace what lies between the markers with the new tables.
+  awk -v res="$tmp/results.md" '
+    /^<!-- RESULTS BEGIN/ { print; while ((getline l < res) > 0) print l; skip = 1; next }
+    /^<!-- RESULTS END/ { skip = 0 }
+    !skip { print }' "$doc" > "$tmp/benchmark.md"
+  cp "$tmp/benchmark.md" "$doc"
+  echo "[bench] wrote $doc and docs/img/bench_*.png; JSON in $BUILD/benchmark.json"
+else
+  cp "$tmp/benchmark.json" "$out/benchmark.json"
+  cp "$tmp/results.md" "$out/results.md"
+  cp "$tmp/table.txt" "$out/table.txt"
+  echo "[bench] results in $out (results.md, table.txt, benchmark.json, img/)"
+fi

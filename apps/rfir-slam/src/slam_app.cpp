@@ -2,6 +2,7 @@
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/map_io.h>
+#include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/eval/metrics.h>
@@ -173,11 +174,10 @@ int runSlamApp(const TAppArgs& args) {
         a.start ? *a.start : data.header.startPose.value_or(mrpt::poses::CPose2D());
     auto engine = rfir::slam::makeEngine(cfg, data.header);
     const size_t n = data.inputs.size();
-    const auto run = rfir::slam::runEngine(*engine, start, data.inputs, [n](size_t i) {
-        if ((i + 1) % std::max<size_t>(1, n / 20) == 0 || i + 1 == n)
-            std::cerr << "\rrfir-slam: step " << (i + 1) << "/" << n << std::flush;
-    });
-    std::cerr << "\n";
+    rfir::common::CProgress progress("rfir-slam", n);
+    const auto run = rfir::slam::runEngine(*engine, start, data.inputs,
+                                           [&progress](size_t i) { progress.update(i); });
+    progress.finish();
 
     if (!mrpt::system::directoryExists(a.outDir) &&
         !mrpt::system::createDirectory(a.outDir))

@@ -46,6 +46,22 @@ void checkSections(const mrpt::config::CConfigFileBase& c, const std::string& fi
 }
 }  // namespace
 
+std::string cleanMessage(const std::exception& e) {
+    // MRPT wraps exceptions that cross its code in banners and a backtrace:
+    // keep the text lines only.
+    std::istringstream in(e.what());
+    std::string line, out;
+    while (std::getline(in, line)) {
+        if (line.rfind("====", 0) == 0 || line.rfind("Call stack", 0) == 0 ||
+            line.rfind("[", 0) == 0 || line.empty())
+            continue;
+        if (line.rfind("Message: ", 0) == 0) line = line.substr(9);
+        if (line.rfind("Location: ", 0) == 0) continue;
+        out += (out.empty() ? "" : " ") + line;
+    }
+    return out.empty() ? std::string(e.what()) : out;
+}
+
 std::string stockIniPath() {
     char buf[4096];
     const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
@@ -69,6 +85,7 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
         ss << f.rdbuf();
         c.setContent(ss.str());
     }
+    std::string ef;
     try {
         checkSections(c, cfg.iniPath);
         cfg.params.loadFromConfigFile(c, "");
@@ -78,12 +95,18 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
             c.write("MetricMap", "irEmitterMap_count", 1);
         // --emitters wins; a relative emitter_file is relative to the INI.
         const std::string sec = kMapPrefix + "_creationOpts";
-        std::string ef = rfir::ir::ini::readString(c, sec, "emitter_file", "");
+        ef = rfir::ir::ini::readString(c, sec, "emitter_file", "");
         if (!emitterOverride.empty())
             ef = std::filesystem::absolute(emitterOverride).string();
         else if (!ef.empty() && std::filesystem::path(ef).is_relative())
             ef = (std::filesystem::path(cfg.iniPath).parent_path() / ef).string();
         if (!ef.empty()) c.write(sec, "emitter_file", ef);
+        // Check our sections and the emitter file first: errors raised inside
+        // MRPT's map factory come back wrapped in its exception format.
+        rfir::maps::CIREmitterMap::TLikelihoodOptions check;
+        check.loadFromConfigFile(c, kMapPrefix + "_likelihoodOpts");
+        rfir::ir::ini::checkKeys(c, sec, {"emitter_file"});
+        if (!ef.empty()) rfir::ir::TEmitterSet::load(ef);
         mrpt::maps::TSetOfMetricMapInitializers inits;
         inits.loadFromConfigFile(c, "MetricMap");
         mrpt::maps::CMultiMetricMap mm;
@@ -91,7 +114,10 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
         cfg.map = mm.mapByClass<rfir::maps::CIREmitterMap>();
         cfg.emitterPath = ef;
     } catch (const std::exception& e) {
-        throw std::runtime_error(cfg.iniPath + ": " + mrpt::exception_to_str(e));
+        const std::string what = cleanMessage(e);
+        // Emitter-file errors already name their file and line.
+        if (what.rfind(ef + ":", 0) == 0) throw std::runtime_error(what);
+        throw std::runtime_error(cfg.iniPath + ": " + what);
     }
     if (!cfg.map) throw std::runtime_error(cfg.iniPath + ": no irEmitterMap was created");
     if (cfg.emitterPath.empty())

@@ -20,6 +20,9 @@ struct TConfig {
     std::shared_ptr<rfir::maps::CIREmitterMap> map;
 };
 
+/** The text of an exception without MRPT's banners and backtrace. */
+std::string cleanMessage(const std::exception& e);
+
 /** <exe_dir>/../share/rfir/config_ini/ir_localize.ini */
 std::string stockIniPath();
 

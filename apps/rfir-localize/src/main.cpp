@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
         std::cerr << "rfir-localize: error: " << e.error() << " (" << e.argId() << ")\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "rfir-localize: error: " << mrpt::exception_to_str(e) << "\n";
+        std::cerr << "rfir-localize: error: " << rfir::localize::cleanMessage(e) << "\n";
         return 1;
     }
 }

@@ -57,7 +57,26 @@ std::optional<size_t> CIREmitterMap::associate(const CObservationIRSignals::TRea
 double CIREmitterMap::observationLogLikelihood(const CObservationIRSignals& obs,
                                                const mrpt::math::TPose2D& robot) const {
     double ll = 0;
+    const auto& lp = likelihoodOptions.params;
+    if (lp.outOfAreaLogLik != 0 && !obs.readings.empty()) {
+        double x0, y0, x1, y1;
+        m_emitters.bounds(x0, y0, x1, y1);
+        const double m = lp.areaMargin;
+        if (robot.x < x0 - m || robot.x > x1 + m || robot.y < y0 - m || robot.y > y1 + m)
+            ll += lp.outOfAreaLogLik;
+    }
     for (const auto& r : obs.readings) {
+        // A receiver that saw nothing (not an undecoded raw window).
+        if (r.codes.empty() && !r.hasRaw() && lp.missLogLik != 0) {
+            const double h = likelihoodOptions.verticalDistance > 0
+                                 ? likelihoodOptions.verticalDistance
+                                 : lp.curve.fitHeight;
+            const double R = std::min(rfir::ir::TEmitterSet::kGridCell,
+                                      lp.missRadiusFraction * lp.curve.visibleRadius(h));
+            const auto q = rfir::ir::receiverInWorld(robot, r.receiver);
+            if (m_emitters.nearestWithin(q.x, q.y, R)) ll += lp.missLogLik;
+            continue;
+        }
         const auto idx = associate(r, robot);
         if (!idx) continue;
         const auto& e = m_emitters.emitters()[*idx];
@@ -129,7 +148,7 @@ std::string CIREmitterMap::asString() const {
 }
 
 uint8_t CIREmitterMap::serializeGetVersion() const {
-    return 0;
+    return 2;
 }
 
 void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
@@ -137,7 +156,8 @@ void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
     out << p.curve.c0 << p.curve.c1 << p.curve.c2 << p.curve.fitHeight
         << p.curve.maxDistance << uint8_t(p.curve.heightModel) << p.sigmaVolts
         << p.sigmaBelief << p.outOfRangeLogLik << uint8_t(likelihoodOptions.association)
-        << likelihoodOptions.verticalDistance;
+        << likelihoodOptions.verticalDistance << p.missLogLik << p.missRadiusFraction
+        << p.areaMargin << p.outOfAreaLogLik;
     out.WriteAs<uint32_t>(m_emitters.emitters().size());
     for (const auto& e : m_emitters.emitters()) out << e.id << e.x << e.y << e.z;
     out << bool(m_reference);
@@ -145,13 +165,23 @@ void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
 }
 
 void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    if (version > 2) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     auto& p = likelihoodOptions.params;
     uint8_t hm = 0, as = 0;
     in >> p.curve.c0 >> p.curve.c1 >> p.curve.c2 >> p.curve.fitHeight >>
         p.curve.maxDistance >> hm >> p.sigmaVolts >> p.sigmaBelief >>
         p.outOfRangeLogLik >> as >> likelihoodOptions.verticalDistance;
     p.curve.heightModel = rfir::ir::TVoltageCurve::HeightModel(hm);
+    if (version >= 1)
+        in >> p.missLogLik >> p.missRadiusFraction;
+    else {
+        p.missLogLik = 0;  // version 0 had no negative information
+        p.missRadiusFraction = 0.8;
+    }
+    if (version >= 2)
+        in >> p.areaMargin >> p.outOfAreaLogLik;
+    else
+        p.outOfAreaLogLik = 0;  // no area term before version 2
     likelihoodOptions.association = TAssociation(as);
     const uint32_t n = in.ReadAs<uint32_t>();
     std::vector<rfir::ir::TEmitter> em(n);

@@ -19,12 +19,21 @@ const std::vector<std::string> kAssociations = {"estimate", "particle"};
 }  // namespace
 
 const std::vector<std::string>& CIREmitterMap::TLikelihoodOptions::allowedKeys() {
-    static const std::vector<std::string> k = {"curve_c0",         "curve_c1",
-                                               "curve_c2",         "fit_height",
-                                               "max_distance",     "height_model",
-                                               "sigma_volts",      "sigma_belief",
-                                               "association",      "out_of_range_loglik",
-                                               "vertical_distance"};
+    static const std::vector<std::string> k = {"curve_c0",
+                                               "curve_c1",
+                                               "curve_c2",
+                                               "fit_height",
+                                               "max_distance",
+                                               "height_model",
+                                               "sigma_volts",
+                                               "sigma_belief",
+                                               "association",
+                                               "out_of_range_loglik",
+                                               "vertical_distance",
+                                               "miss_loglik",
+                                               "miss_radius_fraction",
+                                               "area_margin",
+                                               "out_of_area_loglik"};
     return k;
 }
 
@@ -43,6 +52,12 @@ void CIREmitterMap::TLikelihoodOptions::loadFromConfigFile(
     params.sigmaBelief = ini::readDouble(c, s, "sigma_belief", params.sigmaBelief, 1e-6);
     params.outOfRangeLogLik =
         ini::readDouble(c, s, "out_of_range_loglik", params.outOfRangeLogLik, -1e6, 0);
+    params.missLogLik = ini::readDouble(c, s, "miss_loglik", params.missLogLik, -1e6, 0);
+    params.missRadiusFraction =
+        ini::readDouble(c, s, "miss_radius_fraction", params.missRadiusFraction, 0, 1);
+    params.areaMargin = ini::readDouble(c, s, "area_margin", params.areaMargin, 0);
+    params.outOfAreaLogLik =
+        ini::readDouble(c, s, "out_of_area_loglik", params.outOfAreaLogLik, -1e6, 0);
     association = TAssociation(
         ini::readEnum(c, s, "association", kAssociations, size_t(association)));
     verticalDistance = ini::readDouble(c, s, "vertical_distance", verticalDistance, 0);
@@ -59,6 +74,10 @@ void CIREmitterMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const 
       << "sigma_volts         = " << params.sigmaVolts << "\n"
       << "sigma_belief        = " << params.sigmaBelief << "\n"
       << "out_of_range_loglik = " << params.outOfRangeLogLik << "\n"
+      << "miss_loglik         = " << params.missLogLik << "\n"
+      << "miss_radius_fraction = " << params.missRadiusFraction << "\n"
+      << "area_margin         = " << params.areaMargin << "\n"
+      << "out_of_area_loglik  = " << params.outOfAreaLogLik << "\n"
       << "association         = " << kAssociations[size_t(association)] << "\n"
       << "vertical_distance   = " << verticalDistance << "\n";
 }

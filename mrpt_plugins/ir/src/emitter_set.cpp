@@ -4,10 +4,18 @@
 #include <rfir/obs/ir_codes.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace rfir::ir {
 namespace {
+int64_t cellKey(int64_t ix, int64_t iy) {
+    return (ix << 32) ^ (iy & 0xffffffff);
+}
+int64_t cellOf(double v) {
+    return int64_t(std::floor(v / TEmitterSet::kGridCell));
+}
+
 std::string checkId(const TEmitter& e) {
     const auto codes = codesFromEmitterId(e.id);
     if (!codes)
@@ -32,6 +40,7 @@ TEmitterSet::TEmitterSet(std::vector<TEmitter> emitters)
             throw std::invalid_argument("unique emitter ID '" + e.id + "' used twice");
         list.push_back(i);
     }
+    buildGrid();
 }
 
 TEmitterSet TEmitterSet::load(const std::string& path) {
@@ -74,14 +83,47 @@ size_t TEmitterSet::repeatedEmitterCount() const {
 }
 
 void TEmitterSet::bounds(double& x0, double& y0, double& x1, double& y1) const {
-    x0 = y0 = x1 = y1 = 0;
-    for (size_t i = 0; i < m_emitters.size(); i++) {
-        const auto& e = m_emitters[i];
-        if (i == 0 || e.x < x0) x0 = e.x;
-        if (i == 0 || e.y < y0) y0 = e.y;
-        if (i == 0 || e.x > x1) x1 = e.x;
-        if (i == 0 || e.y > y1) y1 = e.y;
-    }
+    x0 = m_x0;
+    y0 = m_y0;
+    x1 = m_x1;
+    y1 = m_y1;
 }
 
+}  // namespace rfir::ir
+
+namespace rfir::ir {
+void TEmitterSet::buildGrid() {
+    m_grid.clear();
+    for (size_t i = 0; i < m_emitters.size(); i++) {
+        const auto& e = m_emitters[i];
+        if (i == 0 || e.x < m_x0) m_x0 = e.x;
+        if (i == 0 || e.y < m_y0) m_y0 = e.y;
+        if (i == 0 || e.x > m_x1) m_x1 = e.x;
+        if (i == 0 || e.y > m_y1) m_y1 = e.y;
+    }
+    for (size_t i = 0; i < m_emitters.size(); i++)
+        m_grid[cellKey(cellOf(m_emitters[i].x), cellOf(m_emitters[i].y))].push_back(i);
+}
+
+std::optional<double> TEmitterSet::nearestWithin(double x, double y,
+                                                 double radius) const {
+    const int64_t cx = cellOf(x), cy = cellOf(y);
+    double best = radius * radius;
+    bool found = false;
+    for (int64_t ix = cx - 1; ix <= cx + 1; ix++)
+        for (int64_t iy = cy - 1; iy <= cy + 1; iy++) {
+            const auto it = m_grid.find(cellKey(ix, iy));
+            if (it == m_grid.end()) continue;
+            for (size_t i : it->second) {
+                const double dx = m_emitters[i].x - x, dy = m_emitters[i].y - y;
+                const double d2 = dx * dx + dy * dy;
+                if (d2 <= best) {
+                    best = d2;
+                    found = true;
+                }
+            }
+        }
+    if (!found) return std::nullopt;
+    return best;
+}
 }  // namespace rfir::ir

@@ -61,6 +61,17 @@ CIRLocalizer::CIRLocalizer(std::shared_ptr<rfir::maps::CIREmitterMap> map,
     }
 }
 
+std::optional<mrpt::math::TPose2D> CIRLocalizer::associationReference() const {
+    const auto [cov, mean] = m_pdf.getCovarianceAndMean();
+    // Largest standard deviation of the position (2x2 block eigenvalue).
+    const double a = cov(0, 0), b = cov(0, 1), c = cov(1, 1);
+    const double lmax = 0.5 * (a + c) + std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+    if (m_params.associationMaxStd > 0 &&
+        std::sqrt(std::max(0.0, lmax)) > m_params.associationMaxStd)
+        return std::nullopt;
+    return mean.asTPose();
+}
+
 mrpt::poses::CPose2D CIRLocalizer::estimate() const {
     mrpt::poses::CPose2D m;
     m_pdf.getMean(m);
@@ -83,9 +94,17 @@ CObservationIRSignals::Ptr CIRLocalizer::prepare(const CObservationIRSignals& in
             r.volts = d.volts;
             info.decoded++;
         }
+        const bool undecoded = r.codes.empty() && r.hasRaw();
         r.raw.clear();
         r.rateHz = 0;
-        if (r.codes.empty()) continue;
+        if (undecoded) continue;
+        if (r.codes.empty()) {
+            // Nothing in view: negative information, once estimating.
+            if ((m_started || earlyRepeated) &&
+                m_map->likelihoodOptions.params.missLogLik != 0)
+                out->readings.push_back(r);
+            continue;
+        }
         info.readings++;
         const std::string id = emitterIdFromCodes(r.codes);
         if (!m_map->emitters().candidates(id)) {
@@ -120,13 +139,13 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
     const bool byEstimate = m_map->likelihoodOptions.association ==
                             rfir::maps::CIREmitterMap::TAssociation::Estimate;
     // Eq. 5.1 is evaluated against the predicted estimate, once per step.
-    m_map->setAssociationReference(
-        byEstimate && m_started ? std::optional(estimate().asTPose()) : std::nullopt);
+    m_map->setAssociationReference(byEstimate && m_started ? associationReference()
+                                                           : std::nullopt);
     bool unique = false;
     if (obs)
         for (const auto& r : obs->readings)
-            unique =
-                unique || m_map->emitters().isUnambiguous(emitterIdFromCodes(r.codes));
+            unique = unique || (!r.codes.empty() && m_map->emitters().isUnambiguous(
+                                                        emitterIdFromCodes(r.codes)));
     // The first unique ID starts the estimation: the uniform prior is then
     // replaced by poses drawn from the reading. Later, sensor resetting.
     if (unique && !m_started && m_params.startFromReading)
@@ -162,6 +181,7 @@ double CIRLocalizer::fractionInView(const CObservationIRSignals::TReading& r,
 
 size_t CIRLocalizer::sensorReset(const CObservationIRSignals& obs, bool all) {
     for (const auto& r : obs.readings) {
+        if (r.codes.empty()) continue;
         const auto* c = m_map->emitters().candidates(emitterIdFromCodes(r.codes));
         if (!c || c->size() != 1) continue;
         const auto& e = m_map->emitters().emitters()[(*c)[0]];

@@ -38,11 +38,11 @@ void readArea(const mrpt::config::CConfigFileBase& c, const std::string& s,
 void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                           const std::string& prefix) {
     const std::string s = prefix + "localization";
-    ini::checkKeys(
-        c, s,
-        {"num_particles", "init_area", "init_margin", "start_from_reading",
-         "sensor_resetting", "reset_min_fraction", "reset_ratio", "reset_distance_sigma",
-         "repeated_before_unique", "ess_threshold", "resampling", "decode_raw"});
+    ini::checkKeys(c, s,
+                   {"num_particles", "init_area", "init_margin", "start_from_reading",
+                    "sensor_resetting", "reset_min_fraction", "reset_ratio",
+                    "reset_distance_sigma", "repeated_before_unique",
+                    "association_max_std", "ess_threshold", "resampling", "decode_raw"});
     numParticles = ini::readSize(c, s, "num_particles", numParticles, 1, 10000000);
     readArea(c, s, *this);
     initMargin = ini::readDouble(c, s, "init_margin", initMargin, 0);
@@ -55,6 +55,8 @@ void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
         ini::readDouble(c, s, "reset_distance_sigma", resetDistanceSigma, 0);
     repeatedBeforeUnique =
         ini::readBool(c, s, "repeated_before_unique", repeatedBeforeUnique);
+    associationMaxStd =
+        ini::readDouble(c, s, "association_max_std", associationMaxStd, 0);
     essThreshold = ini::readDouble(c, s, "ess_threshold", essThreshold, 0, 1);
     resampling = mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm(
         ini::readEnum(c, s, "resampling", kResampling, size_t(resampling)));
@@ -89,6 +91,7 @@ void TLocalizerParams::dumpToTextStream(std::ostream& o) const {
       << "reset_ratio = " << resetRatio << "\n"
       << "reset_distance_sigma = " << resetDistanceSigma << "\n"
       << "repeated_before_unique = " << b(repeatedBeforeUnique) << "\n"
+      << "association_max_std = " << associationMaxStd << "\n"
       << "ess_threshold = " << essThreshold << "\n"
       << "resampling = " << kResampling[size_t(resampling)] << "\n"
       << "decode_raw = " << b(decodeRaw) << "\n\n"

@@ -5,8 +5,11 @@
 
 #include <rfir/obs/ir_lattice.h>
 
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace rfir::ir {
@@ -36,10 +39,18 @@ class TEmitterSet {
     size_t distinctIdCount() const { return m_byId.size(); }
     /** Bounding box of the emitters (x0, y0, x1, y1); zeros when empty. */
     void bounds(double& x0, double& y0, double& x1, double& y1) const;
+    /** Squared horizontal distance from (x, y) to the nearest emitter, if one
+     * lies within `radius` (<= kGridCell) of it; a grid lookup, O(1). */
+    std::optional<double> nearestWithin(double x, double y, double radius) const;
+    /** Cell side of the lookup grid (m): the largest radius nearestWithin takes. */
+    static constexpr double kGridCell = 0.5;
 
   private:
+    void buildGrid();
     std::vector<TEmitter> m_emitters;
     std::map<std::string, std::vector<size_t>> m_byId;
+    std::unordered_map<int64_t, std::vector<size_t>> m_grid;
+    double m_x0 = 0, m_y0 = 0, m_x1 = 0, m_y1 = 0;  //!< cached bounds
 };
 
 }  // namespace rfir::ir

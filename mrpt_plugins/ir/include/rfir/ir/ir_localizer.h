@@ -50,6 +50,12 @@ struct TLocalizerParams : public mrpt::config::CLoadableOptions {
     /** repeated_before_unique: use repeated-ID readings before the first
      * unique one (association = particle only; the thesis waits). */
     bool repeatedBeforeUnique = false;
+    /** association_max_std (m): association = estimate attributes repeated
+     * IDs against the estimate only while the particles' position spread
+     * (largest standard deviation) is below this; a spread-out (e.g. ring
+     * shaped, after a single unique emitter) posterior has a meaningless mean.
+     * 0 disables the gate (the thesis). */
+    double associationMaxStd = 0;
     double essThreshold = 0.5;  //!< ess_threshold: resample when ESS/M below it
     mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
         mrpt::bayes::CParticleFilter::prSystematic;  //!< resampling
@@ -87,6 +93,9 @@ class CIRLocalizer {
                         const rfir::obs::CObservationIRSignals* ir);
 
     bool started() const { return m_started; }
+    /** The estimate used for the Estimate association, nullopt while the
+     * particles are too spread out (association_max_std). */
+    std::optional<mrpt::math::TPose2D> associationReference() const;
     /** Weighted mean of the particles (eq. 5.4). */
     mrpt::poses::CPose2D estimate() const;
     /** Weighted share of particles that place the reading's receiver within

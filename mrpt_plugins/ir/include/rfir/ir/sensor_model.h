@@ -68,6 +68,17 @@ struct TIRLikelihoodParams {
      * emitter's visible radius (it could not have seen it); 0 disables it
      * (the seed's eq. 5.2 alone). */
     double outOfRangeLogLik = -8.0;
+    /** Negative information (not in the seed): log-likelihood added when a
+     * receiver that saw nothing would be within missRadiusFraction of the
+     * visible radius of some emitter of the map; 0 disables it. Failed
+     * emitters stay in the map, so it is kept mild. */
+    double missLogLik = 0.0;
+    double missRadiusFraction = 0.8;
+    /** The robot stays under the emitters: a pose farther than areaMargin
+     * outside their bounding box gets outOfAreaLogLik per observation (not in
+     * the seed; 0 disables it). */
+    double areaMargin = 0.5;
+    double outOfAreaLogLik = 0.0;
 };
 
 /** Log-likelihood of one reading (voltage v) from an emitter at `emitter`, for

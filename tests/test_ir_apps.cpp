@@ -1,0 +1,188 @@
+/* rfir-localize and rfir-ids as programs: outputs, reproducibility, errors
+ * that name the file and line or the INI section and key; the ID arithmetic
+ * and the layout planner. */
+#include <rfir/common/map_io.h>
+#include <rfir/common/trajectory_io.h>
+#include <rfir/ir/id_planner.h>
+#include <rfir/sim/simulator.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kBin = std::string(RFIR_BINARY_DIR) + "/bin/";
+const std::string kDir = std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_apps";
+
+std::string slurp(const std::string& p) {
+    std::ifstream f(p);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+/** Runs a command line; returns its exit code, stdout and stderr. */
+int sh(const std::string& cmd, std::string* out = nullptr, std::string* err = nullptr) {
+    const std::string o = kDir + "/stdout.txt", e = kDir + "/stderr.txt";
+    const int rc = std::system((cmd + " > '" + o + "' 2> '" + e + "'").c_str());
+    if (out) *out = slurp(o);
+    if (err) *err = slurp(e);
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+/** A short simulated run (30 s of the IR loop) written once. */
+const std::string& rawlog() {
+    static std::string path;
+    if (!path.empty()) return path;
+    fs::create_directories(kDir);
+    auto cfg = rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) +
+                                        "/config_ini/sim_ir_loop.ini");
+    cfg.maxDuration = 30;
+    cfg.trajectory.spots = 5;
+    rfir::sim::writeOutputs(rfir::sim::simulate(cfg, 3), kDir, "run");
+    path = kDir + "/run.rawlog";
+    return path;
+}
+
+std::string localize(const std::string& args) {
+    return kBin + "rfir-localize -q --rawlog '" + rawlog() + "' " + args;
+}
+}  // namespace
+
+TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
+    const std::string out = kDir + "/out_a", out2 = kDir + "/out_b";
+    fs::remove_all(out);
+    fs::remove_all(out2);
+    ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
+                          "' --seed 5")),
+              0);
+    for (const char* f :
+         {"path.tum", "stats.json", "settings.ini", "path.png", "errors.txt"})
+        EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
+    const auto path = rfir::common::loadTUM(out + "/path.tum");
+    EXPECT_GT(path.size(), 200u);
+    const std::string stats = slurp(out + "/stats.json");
+    EXPECT_NE(stats.find("\"first_unique_time\": "), std::string::npos);
+    EXPECT_NE(stats.find("\"path_errors\""), std::string::npos);
+    EXPECT_NE(stats.find("\"spot_errors\""), std::string::npos);
+    EXPECT_NE(slurp(out + "/errors.txt").find("IR MCL (spots)"), std::string::npos);
+    // settings.ini + the same seed gives the same path, byte for byte.
+    ASSERT_EQ(sh(localize("--config '" + out + "/settings.ini' --out-dir '" + out2 +
+                          "' --seed 5")),
+              0);
+    EXPECT_EQ(slurp(out + "/path.tum"), slurp(out2 + "/path.tum"));
+}
+
+TEST(IRApps, LocalizeOdometryOnly) {
+    const std::string out = kDir + "/out_odo";
+    ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
+                          "' --odometry-only")),
+              0);
+    const auto gt = rfir::common::loadTUM(kDir + "/run.gt.tum");
+    const auto p = rfir::common::loadTUM(out + "/path.tum");
+    EXPECT_EQ(p.size(), gt.size());  // every instant, from the start
+    EXPECT_NE(slurp(out + "/stats.json").find("\"mode\": \"odometry-only\""),
+              std::string::npos);
+}
+
+TEST(IRApps, LocalizeRejectsUnknownIniKeyAndSection) {
+    std::string ini = slurp(std::string(RFIR_SOURCE_DIR) + "/config_ini/ir_localize.ini");
+    const std::string bad = kDir + "/bad_key.ini";
+    std::ofstream(bad) << ini << "\n[motion]\nk_xyz = 0.1\n";
+    std::string err;
+    EXPECT_EQ(sh(localize("--config '" + bad + "' --emitters '" + kDir +
+                          "/run.gt_map.txt' --out-dir '" + kDir + "/o'"),
+                 nullptr, &err),
+              1);
+    EXPECT_NE(err.find("unknown key 'k_xyz'"), std::string::npos) << err;
+    EXPECT_NE(err.find("[motion]"), std::string::npos) << err;
+    const std::string bad2 = kDir + "/bad_section.ini";
+    std::ofstream(bad2) << ini << "\n[localisation]\nnum_particles = 5\n";
+    EXPECT_EQ(sh(localize("--config '" + bad2 + "' --emitters '" + kDir +
+                          "/run.gt_map.txt' --out-dir '" + kDir + "/o'"),
+                 nullptr, &err),
+              1);
+    EXPECT_NE(err.find("unknown INI section [localisation]"), std::string::npos) << err;
+    const std::string bad3 = kDir + "/bad_value.ini";
+    std::ofstream(bad3) << ini << "\n[MetricMap_irEmitterMap_00_likelihoodOpts]\n"
+                        << "association = nearest\n";
+    EXPECT_EQ(sh(localize("--config '" + bad3 + "' --emitters '" + kDir +
+                          "/run.gt_map.txt' --out-dir '" + kDir + "/o'"),
+                 nullptr, &err),
+              1);
+    EXPECT_NE(err.find("key 'association'"), std::string::npos) << err;
+}
+
+TEST(IRApps, LocalizeBadEmitterFileNamesLine) {
+    const std::string em = kDir + "/bad_emitters.txt";
+    std::ofstream(em)
+        << "emitter 1 0 0 1.5\nemitter 12 0.4 0.4 1.5\nemitter 21 1 1 1.5\n";
+    std::string err;
+    EXPECT_EQ(
+        sh(localize("--emitters '" + em + "' --out-dir '" + kDir + "/o'"), nullptr, &err),
+        1);
+    EXPECT_NE(err.find(em + ":3: emitter ID '21'"), std::string::npos) << err;
+    EXPECT_EQ(sh(localize("--out-dir '" + kDir + "/o'"), nullptr, &err), 1);
+    EXPECT_NE(err.find("no emitter file"), std::string::npos) << err;
+    EXPECT_EQ(sh(kBin + "rfir-localize -q --rawlog /nonexistent.rawlog --emitters '" +
+                     em + "' --out-dir '" + kDir + "/o'",
+                 nullptr, &err),
+              1);
+}
+
+TEST(IRIds, CountsAndCodes) {
+    std::string out;
+    ASSERT_EQ(sh(kBin + "rfir-ids count", &out), 0);
+    EXPECT_EQ(out, "511\n");
+    ASSERT_EQ(sh(kBin + "rfir-ids count --frequencies 30 --max-codes 6", &out), 0);
+    EXPECT_EQ(out, "768211\n");  // thesis 5.3
+    ASSERT_EQ(sh(kBin + "rfir-ids encode --codes 3,9", &out), 0);
+    EXPECT_EQ(out, "39\n");
+    ASSERT_EQ(sh(kBin + "rfir-ids decode --id 39", &out), 0);
+    EXPECT_NE(out.find("frequencies_hz 250 1150"), std::string::npos);
+    EXPECT_NE(out.find("type unique"), std::string::npos);
+    std::string err;
+    EXPECT_EQ(sh(kBin + "rfir-ids encode --codes 9,3", &out, &err), 1);
+    EXPECT_NE(err.find("'9,3'"), std::string::npos);
+    EXPECT_EQ(sh(kBin + "rfir-ids frobnicate", &out, &err), 1);
+}
+
+// Thesis 5.3: L_r = 600, W_r = 400, 9 repeated IDs: 239,010 against 479,001.
+TEST(IRIds, MemorySizes) {
+    EXPECT_EQ(rfir::ir::mixedLayoutRecords(600, 400, 9), 239010u);
+    EXPECT_EQ(rfir::ir::uniqueOnlyLayoutRecords(600, 400), 479001u);
+    std::string out;
+    ASSERT_EQ(sh(kBin + "rfir-ids memory --grid '600 400'", &out), 0);
+    EXPECT_NE(out.find("239010"), std::string::npos);
+    EXPECT_NE(out.find("479001"), std::string::npos);
+}
+
+// The planner on the simulator's room: 5 x 4 repeated (4 codes) + 4 x 3 unique
+// emitters = 32 emitters, 16 IDs, against 32 with unique IDs only.
+TEST(IRIds, PlannerCountsAndFile) {
+    rfir::ir::TRoom room{0, 0, 3.2, 2.4};
+    const auto r = rfir::ir::planLattice(room, {});
+    EXPECT_EQ(r.emitters.size(), 32u);
+    EXPECT_EQ(r.repeatedEmitters, 20u);
+    EXPECT_EQ(r.uniqueEmitters, 12u);
+    EXPECT_EQ(r.repeatedGridX, 5u);
+    EXPECT_EQ(r.repeatedGridY, 4u);
+    EXPECT_EQ(r.distinctIds, 16u);
+    EXPECT_EQ(r.uniqueOnlyIds, 32u);
+    const std::string f = kDir + "/planned.txt";
+    fs::create_directories(kDir);
+    std::string out;
+    ASSERT_EQ(sh(kBin + "rfir-ids plan --room '0 0 3.2 2.4' --out '" + f + "'", &out), 0);
+    EXPECT_NE(out.find("IDs used:          16"), std::string::npos) << out;
+    const auto m = rfir::common::loadMapFile(f);
+    EXPECT_EQ(m.size(), 32u);
+    // A room too large for 9 codes is refused.
+    std::string err;
+    EXPECT_EQ(sh(kBin + "rfir-ids plan --room '0 0 40 40'", &out, &err), 1);
+    EXPECT_NE(err.find("more unique IDs"), std::string::npos) << err;
+}

@@ -20,6 +20,7 @@ struct TBenchOptions
     std::vector<std::string> methods{"ps", "pf", "fastslam"};
     size_t timedUpdates = 200;  //!< timed updates per case
     size_t warmupUpdates = 10;  //!< untimed updates before them
+    size_t rounds = 3;          //!< rounds over every case (each keeps its fastest)
     /** FastSLAM cases with M * N above this are skipped (O(M N) memory). */
     double maxFastSlamMN = 5e7;
     double realtimeSeconds = 1200;  //!< simulated length of the real-time run

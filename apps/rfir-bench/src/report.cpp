@@ -84,7 +84,8 @@ void printTable(const TBenchReport& r, std::ostream& out)
 {
     out << "rfir-bench on " << r.host << " (load average " << row("%.1f", r.loadBefore)
         << " before, " << row("%.1f", r.loadAfter) << " after); single thread; thread CPU "
-        << "time per SLAM update, median of " << r.options.timedUpdates
+        << "time per SLAM update, median of " << r.options.timedUpdates << " (fastest of "
+        << r.options.rounds << " rounds)"
         << " (2 known tags read per update; wall_us = wall-clock median); memory = heap "
         << "bytes in use by the state (glibc mallinfo2)\n\n";
     out << "floor (motion noise draw + 1 detection likelihood per particle)\n"
@@ -119,7 +120,8 @@ std::string toJson(const TBenchReport& r)
     o << std::setprecision(6) << "{\n  \"host\": \"" << jsonEscape(r.host)
       << "\",\n  \"seed\": " << r.options.seed << ",\n  \"quick\": "
       << (r.options.quick ? "true" : "false") << ",\n  \"timed_updates\": "
-      << r.options.timedUpdates << ",\n  \"time_measure\": \"thread CPU time per update\""
+      << r.options.timedUpdates << ",\n  \"rounds\": " << r.options.rounds
+      << ",\n  \"time_measure\": \"thread CPU time per update\""
       << ",\n  \"load_before\": " << r.loadBefore << ",\n  \"load_after\": " << r.loadAfter
       << ",\n  \"memory_measure\": \"glibc mallinfo2 heap in use\""
       << ",\n  \"floor\": [";

@@ -48,8 +48,9 @@ std::string toMarkdown(const TBenchReport& r)
     o << "Measured on " << r.host << ", shared with other jobs while it ran (1-minute load "
       << "average " << num(r.loadBefore, 1) << " at the start, " << num(r.loadAfter, 1)
       << " at the end); one thread; seed " << r.options.seed << "; times are thread CPU "
-      << "time, median of " << r.options.timedUpdates << " timed updates per case (wall: "
-      << "the wall-clock median).\n\n";
+      << "time, median of " << r.options.timedUpdates << " timed updates per case, the "
+      << "fastest of " << r.options.rounds << " rounds (wall: the wall-clock median of "
+      << "that round).\n\n";
     o << "**Floor** (motion noise draw + one detection likelihood per particle)\n\n"
       << "| M | median us | mean us | wall us |\n| ---: | ---: | ---: | ---: |\n";
     for (const auto& f : r.floor)

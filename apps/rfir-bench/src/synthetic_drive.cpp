@@ -9,8 +9,7 @@ namespace rfir::bench
 {
 namespace
 {
-constexpr double kStepLength = 0.1;   //!< m per insertion step
-constexpr double kJitter = 0.005;     //!< m, re-read and timed steps
+constexpr double kJitter = 0.005;  //!< m, back and forth at every step
 constexpr size_t kReaders = 8;
 }  // namespace
 
@@ -24,11 +23,12 @@ std::string syntheticTagId(size_t i)
 CSyntheticDrive::CSyntheticDrive(size_t N, size_t perStep) : N_(N)
 {
     if (N < kReaders) throw std::invalid_argument("the synthetic drive needs N >= 8 tags");
-    // The LAST insertion step is a full one, so every reader has a tag at the
-    // spot where the timed updates happen.
+    // Every step reads at least 8 new tags (one per reader), and the LAST one
+    // is full, so every reader has a tag where the timed updates happen.
     size_t first = N % perStep;
-    if (first != 0 && N > perStep) chunkStart_.push_back(0);
-    for (size_t s = N > perStep ? first : 0; s < N; s += perStep) chunkStart_.push_back(s);
+    if (first != 0 && first < kReaders && N > perStep) first += perStep;
+    if (first != 0 && N > first) chunkStart_.push_back(0);
+    for (size_t s = N > first ? first : 0; s < N; s += perStep) chunkStart_.push_back(s);
     readers_ = rfir::sim::ringReaderLayout(0.15, 0.03);
     if (readers_.size() != kReaders)
         throw std::logic_error("the synthetic drive expects 8 readers");
@@ -46,22 +46,19 @@ rfir::obs::CObservationRFIDReaders::Ptr CSyntheticDrive::observation(
 
 rfir::slam::TSlamInput CSyntheticDrive::populationStep(size_t i) const
 {
-    const size_t c = i / 2;
-    const size_t begin = chunkStart_.at(c);
-    const size_t end = c + 1 < chunkStart_.size() ? chunkStart_[c + 1] : N_;
+    const size_t begin = chunkStart_.at(i);
+    const size_t end = i + 1 < chunkStart_.size() ? chunkStart_[i + 1] : N_;
     rfir::slam::TSlamInput in;
     in.t = 0.1 * double(i);
+    if (i > 0) in.odometryIncrement = mrpt::poses::CPose2D(i % 2 ? kJitter : -kJitter, 0, 0);
     std::vector<std::pair<size_t, size_t>> reads;
-    if (i % 2 == 0)
+    for (size_t t = begin; t < end; t++) reads.push_back({(t - begin) % kReaders, t});
+    if (i >= 2)
     {
-        in.odometryIncrement = mrpt::poses::CPose2D(kStepLength, 0, 0);
-        for (size_t t = begin; t < end; t++) reads.push_back({(t - begin) % kReaders, t});
-    }
-    else
-    {
-        in.odometryIncrement = mrpt::poses::CPose2D(kJitter, 0, 0);
-        for (size_t t = begin; t < std::min(end, begin + 2); t++)
-            reads.push_back({(t - begin) % kReaders, t});
+        // A new visit of two tags of step i - 2 (absent from step i - 1).
+        const size_t old = chunkStart_[i - 2];
+        reads.push_back({0, old});
+        reads.push_back({1, old + 1});
     }
     in.rfid = observation(reads);
     return in;
@@ -73,8 +70,8 @@ rfir::slam::TSlamInput CSyntheticDrive::timedStep(size_t k) const
     const size_t pair = k % (kReaders / 2);
     rfir::slam::TSlamInput in;
     in.t = 0.1 * double(populationSteps() + k);
-    // Back and forth: the robot stays over the last insertion spot.
-    in.odometryIncrement = mrpt::poses::CPose2D(k % 2 == 0 ? -kJitter : kJitter, 0, 0);
+    const size_t step = populationSteps() + k;
+    in.odometryIncrement = mrpt::poses::CPose2D(step % 2 ? kJitter : -kJitter, 0, 0);
     in.rfid = observation({{2 * pair, last + 2 * pair}, {2 * pair + 1, last + 2 * pair + 1}});
     return in;
 }

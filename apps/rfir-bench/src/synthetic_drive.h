@@ -1,14 +1,16 @@
 /* rfir-bench: the synthetic drive that builds an N-tag state with the method
  * itself, then the timed updates in which two known tags are read.
  *
- * The robot (8 readers of 60 mm on the simulator's default ring) drives along
- * +x. Population: each insertion step moves 0.1 m and reads up to 64 new tags
- * (8 per reader, at the reader's centre); the next step moves 5 mm and re-reads
- * two of them, so the particles are weighed and resampled as in a real run.
- * Timed updates: the robot jitters by +-5 mm over the last insertion spot and
- * two readers read one known tag each; the four reader pairs take turns, so
- * every read starts a new visit of its tag (all tag-map policies weigh the
- * robot with it). */
+ * The robot (the simulator's default ring of 8 readers of 60 mm) jitters by
+ * +-5 mm about one spot, so the robot filter stays consistent however many
+ * steps the build takes (a drive without loop closures would drift and trip
+ * the kidnap monitor). Population step i reads up to 64 new tags (8 per
+ * reader, at the reader's centre) and re-reads two tags first read at step
+ * i - 2: a new visit, so the robot is weighed and resampled as in a real run,
+ * and FastSLAM's particles come to share the EKFs of common ancestors.
+ * Timed updates: two readers read one known tag each; the four reader pairs
+ * take turns, so every read starts a new visit of its tag (every tag-map
+ * policy weighs the robot with it). */
 #pragma once
 
 #include <rfir/obs/CObservationRFIDReaders.h>
@@ -24,7 +26,7 @@ class CSyntheticDrive
 public:
     explicit CSyntheticDrive(size_t N, size_t tagsPerStep = 64);
 
-    size_t populationSteps() const { return 2 * chunkStart_.size(); }
+    size_t populationSteps() const { return chunkStart_.size(); }
     rfir::slam::TSlamInput populationStep(size_t i) const;
     /** Timed update k (k = 0, 1, ...), after every population step. */
     rfir::slam::TSlamInput timedStep(size_t k) const;

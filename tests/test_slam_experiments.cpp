@@ -1,6 +1,7 @@
 /* rfir_slam experiments behind docs/slam.md (not run by ctest: DISABLED_).
  * Run: test_slam_experiments --gtest_also_run_disabled_tests
  *   SLAM_EXP_SETUP = 60mm | 300mm | 60mm_kidnap | rb     (default 60mm)
+ *                    60mm_biased | 300mm_biased (odometry with systematic errors)
  *   SLAM_EXP_SEEDS = number of seeds                   (default 3)
  *   SLAM_EXP_METHODS = comma list of pf,ps,fastslam,odometry
  *   SLAM_EXP_EDITS = "section.key=value;..." applied to every method's INI */
@@ -30,6 +31,8 @@ std::vector<std::string> split(const std::string& s, char c) {
 rfir::sim::TSimConfig setup(const std::string& name) {
     if (name == "300mm") return setup300mm(150);
     if (name == "300mm_long") return setup300mm(0);
+    if (name == "60mm_biased") return setup60mmLoop(3, true);
+    if (name == "300mm_biased") return setup300mm(150, true);
     if (name == "60mm_random") {
         auto c = setup60mmLoop(1);
         c.trajectory.kind = rfir::sim::TTrajectoryConfig::Kind::Random;

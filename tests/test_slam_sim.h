@@ -96,9 +96,20 @@ inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConf
     return r;
 }
 
-/** The thesis 4.1 / 4.2 setup: 8 readers of 300 mm, 4 tags/m^2. */
-inline rfir::sim::TSimConfig setup300mm(double duration) {
+/** The odometry noise of a stock simulator INI: the seed setups use the
+ * seeds' zero-mean noise at the calibrated level (docs/simulator.md), the
+ * `_biased` INIs realistic odometry with per-run systematic errors. */
+inline rfir::sim::TOdometryNoise stockOdometry(const std::string& ini) {
+    return rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini)
+        .odometry;
+}
+
+/** The thesis 4.1 / 4.2 setup: 8 readers of 300 mm, 4 tags/m^2; odometry of
+ * sim_rfid_300mm_4tags_random[_biased].ini. */
+inline rfir::sim::TSimConfig setup300mm(double duration, bool biased = false) {
     rfir::sim::TSimConfig c;
+    c.odometry = stockOdometry(biased ? "sim_rfid_300mm_4tags_random_biased.ini"
+                                      : "sim_rfid_300mm_4tags_random.ini");
     c.readers = rfir::sim::ringReaderLayout(0.4, 0.15);
     c.rfid.density = 4;
     c.trajectory.kind = rfir::sim::TTrajectoryConfig::Kind::Random;
@@ -107,9 +118,12 @@ inline rfir::sim::TSimConfig setup300mm(double duration) {
     return c;
 }
 
-/** The thesis 3.1 setup: 8 readers of 60 mm, 16 tags/m^2, rectangle loop. */
-inline rfir::sim::TSimConfig setup60mmLoop(int laps) {
+/** The thesis 3.1 setup: 8 readers of 60 mm, 16 tags/m^2, rectangle loop;
+ * odometry of sim_rfid_60mm_16tags_loop[_biased].ini. */
+inline rfir::sim::TSimConfig setup60mmLoop(int laps, bool biased = false) {
     rfir::sim::TSimConfig c;  // the simulator's defaults are this setup
+    c.odometry = stockOdometry(biased ? "sim_rfid_60mm_16tags_loop_biased.ini"
+                                      : "sim_rfid_60mm_16tags_loop.ini");
     c.readers = rfir::sim::ringReaderLayout(0.15, 0.03);
     c.rfid.density = 16;
     c.trajectory.kind = rfir::sim::TTrajectoryConfig::Kind::Loop;

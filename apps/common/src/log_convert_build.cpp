@@ -82,9 +82,12 @@ TTextLogHeader fromLogHeader(const CObservationLogHeader& o) {
     h.readers = o.readers;
     h.receivers = o.receivers;
     h.rbSensor = o.rbSensor;
+    // A header read from a file has a start heading of pi wrapped to -pi,
+    // which the text cannot hold: it is pi again.
     if (o.startPose)
-        h.start = TTextLogHeader::TStart{o.startPose->x(), o.startPose->y(),
-                                         o.startPose->phi()};
+        h.start = TTextLogHeader::TStart{
+            o.startPose->x(), o.startPose->y(),
+            o.startPose->phi() == -M_PI ? M_PI : o.startPose->phi()};
     return h;
 }
 
@@ -130,6 +133,22 @@ void addRb(const TTimedRecord& r, const CObservationLogHeader& hdr, int32_t lmId
     rb->sensedData.push_back(m);
 }
 }  // namespace
+
+void addDarkReceivers(const CObservationLogHeader& hdr, CObservationIRSignals& ir) {
+    // textlog 1 writes what a receiver sees; at an instant with IR records,
+    // a declared receiver without one saw nothing (negative information the
+    // IR localizer uses): it gets a reading with no code, 0 V and no window,
+    // after the others, in header order.
+    const size_t n = ir.readings.size();
+    for (const auto& rc : hdr.receivers) {
+        bool named = false;
+        for (size_t i = 0; i < n && !named; i++) named = ir.readings[i].receiver.id == rc.id;
+        if (named) continue;
+        CObservationIRSignals::TReading rd;
+        rd.receiver = rc;
+        ir.readings.push_back(std::move(rd));
+    }
+}
 
 void CInstantBuilder::build(const std::vector<TTimedRecord>& recs,
                             std::optional<mrpt::poses::CPose2D>& odometry,
@@ -180,6 +199,7 @@ void CInstantBuilder::build(const std::vector<TTimedRecord>& recs,
     if (!recs.empty() && !(ts = timestampFromT(recs[0].t)))
         throw std::runtime_error("t " + formatNumber(recs[0].t) +
                                  " cannot be an MRPT timestamp");
+    if (ir) addDarkReceivers(hdr_, *ir);
     if (rfid) obs.push_back(rfid);
     if (ir) obs.push_back(ir);
     if (rb) obs.push_back(rb);

@@ -6,7 +6,9 @@
 #include <rfir/common/log_convert.h>
 #include <rfir/common/rawlog_io.h>
 
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
 #include <cmath>
@@ -24,10 +26,24 @@ namespace {
 /** An angle as the text wants it, in (-pi, pi]. */
 template <class T>
 T textAngle(T a) {
-    if (a > T(-M_PI) && a <= T(M_PI)) return a;
+    // Compared as doubles: float(pi) is above pi and the parser refuses it.
+    if (double(a) > -M_PI && double(a) <= M_PI) return a;
     a = mrpt::math::wrapToPi(a);
-    if (!(a > T(-M_PI))) a = std::nextafter(T(M_PI), T(0));
+    if (!(double(a) > -M_PI)) a = std::nextafter(T(M_PI), T(0));
+    while (!(double(a) <= M_PI)) a = std::nextafter(a, T(0));
     return a;
+}
+
+/** `h` as a reader gets it from a file: reading wraps a start heading of pi
+ * to -pi, so the header read is compared with the rebuilt one read back. */
+CObservationLogHeader readBack(const CObservationLogHeader& h) {
+    mrpt::io::CMemoryStream m;
+    auto a = mrpt::serialization::archiveFrom(m);
+    a << h;
+    m.Seek(0);
+    CObservationLogHeader r;
+    a >> r;
+    return r;
 }
 
 class CRawToText {
@@ -44,6 +60,7 @@ class CRawToText {
     std::vector<TTimedRecord> recordsOf(const CObservation& o, double t);
     void recordsOfIR(const CObservationIRSignals& o, TTimedRecord& r,
                      std::vector<TTimedRecord>& v);
+    void checkDarkReadings(const CObservationIRSignals& o);
     void recordsOfRB(const CObservationBearingRange& o, TTimedRecord& r,
                      std::vector<TTimedRecord>& v);
     void checkRebuilt(const CObservation& o, const std::vector<TTimedRecord>& recs);
@@ -99,6 +116,7 @@ void CRawToText::timeOf(const CObservation& o, double& t) {
 void CRawToText::recordsOfIR(const CObservationIRSignals& o, TTimedRecord& r,
                              std::vector<TTimedRecord>& v) {
     if (o.readings.empty()) lossy("IR observation with no receiver");
+    checkDarkReadings(o);
     for (const auto& rd : o.readings) {
         r.id = rd.receiver.id;
         if (rd.hasRaw()) {
@@ -114,12 +132,29 @@ void CRawToText::recordsOfIR(const CObservationIRSignals& o, TTimedRecord& r,
             r.kind = TTimedRecord::Kind::Ir;
             r.codes = rd.codes;
             r.volts = rd.volts;
-        } else {
-            lossy("IR reading with no code and no raw window (nothing in view)");
-            continue;
-        }
+        } else
+            continue;  // nothing in view: no record (checkDarkReadings)
         v.push_back(r);
     }
+}
+
+void CRawToText::checkDarkReadings(const CObservationIRSignals& o) {
+    // The import adds a reading with nothing in view for each declared
+    // receiver without a record: the stored ones must be exactly those.
+    CObservationIRSignals seen;
+    for (const auto& rd : o.readings)
+        if (rd.hasRaw() || !rd.codes.empty()) seen.readings.push_back(rd);
+    if (seen.readings.size() == o.readings.size()) return;
+    if (seen.readings.empty()) {
+        lossy("IR observation in which no receiver sees anything");
+        return;
+    }
+    auto expected = seen;
+    addDarkReceivers(builder_->header(), expected);
+    if (expected.readings != o.readings)
+        lossy(
+            "IR readings with nothing in view other than one per declared receiver "
+            "without a reading, after the others, in header order");
 }
 
 void CRawToText::recordsOfRB(const CObservationBearingRange& o, TTimedRecord& r,
@@ -223,7 +258,7 @@ TConvertReport CRawToText::run(std::ostream& out, size_t expected) {
     // first instant's); everything else must come back exactly.
     auto rebuilt = toLogHeader(th, hdr.rbLandmarkNames, 0);
     rebuilt.timestamp = hdr.timestamp;
-    if (!sameSerialization(hdr, rebuilt))
+    if (!sameSerialization(hdr, readBack(rebuilt)))
         lossy("log header sensor label (or no rfir log header)");
     std::ostringstream hs;
     writeTextLogHeader(hs, th);

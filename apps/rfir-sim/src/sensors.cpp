@@ -56,6 +56,10 @@ rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorl
     const auto& ir = cfg.ir;
     auto o = rfir::obs::CObservationIRSignals::Create();
     o->sensorLabel = "IR";
+    // Decoded output: receivers that see nothing (no code, 0 V) come after the
+    // others, in receiver order, which is where the import of a text log puts
+    // the declared receivers that have no `ir` record (docs/import.md).
+    std::vector<rfir::obs::CObservationIRSignals::TReading> dark;
     for (const auto& rx : cfg.receivers)
     {
         rfir::obs::CObservationIRSignals::TReading rd;
@@ -85,14 +89,34 @@ rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorl
                                                   size_t(ir.samples), phases);
             for (auto& v : rd.raw) v += float(rng.drawGaussian1D(0, ir.rawNoiseSigma));
             rd.rateHz = ir.rateHz;
-            // The rawlog keeps what a receiver gives: the window. Codes and volts
-            // are left for the decoder (textlog `ir_raw`).
-            rd.codes.clear();
-            rd.volts = 0;
+            // The window is kept with what the FFT decoder finds in it (with its
+            // default parameters), exactly as the import of `ir_raw` stores it:
+            // the true codes and voltage are not in the rawlog.
+            const auto dec = rfir::ir::decodeIRWindow(rd.raw, rd.rateHz);
+            rd.codes = dec.codes;
+            rd.volts = dec.volts;
+        }
+        else if (rd.codes.empty())
+        {
+            dark.push_back(rd);
+            continue;
         }
         o->readings.push_back(rd);
     }
+    // A textlog cannot say "no receiver saw anything" (no `ir` record at all
+    // means no IR reading): such an instant has no IR observation.
+    if (o->readings.empty()) return nullptr;
+    for (auto& rd : dark) o->readings.push_back(std::move(rd));
     return o;
+}
+
+/** A bearing as a float in (-pi, pi], as the import stores a text `rb`
+ * bearing: float rounding may push +-pi just outside. */
+float floatBearing(double b)
+{
+    float f = float(std::atan2(std::sin(b), std::cos(b)));
+    if (!(double(f) > -M_PI && double(f) <= M_PI)) f = std::nextafter(f, 0.f);
+    return f;
 }
 
 mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
@@ -107,10 +131,9 @@ mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TW
     o->maxSensorDistance = float(sp.maxRange);
     o->fieldOfView_yaw = float(sp.fov);
     o->fieldOfView_pitch = 0;
-    o->validCovariances = false;
-    o->sensor_std_range = float(cfg.rb.sigmaRange);
-    o->sensor_std_yaw = float(cfg.rb.sigmaBearing);
-    o->sensor_std_pitch = 0;
+    // The noise fields (sensor_std_*, covariances) keep MRPT's defaults, as in
+    // an imported text log, which cannot carry them: SLAM takes the noise from
+    // its INI (rb_std_range, rb_std_bearing, equal to [range_bearing]'s defaults).
     const auto sensor = robot + mrpt::poses::CPose2D(sp.x, sp.y, sp.yaw);
     for (size_t i = 0; i < w.landmarks.size(); i++)
     {
@@ -121,13 +144,19 @@ mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TW
         if (r > sp.maxRange || std::abs(b) > 0.5 * sp.fov) continue;
         mrpt::obs::CObservationBearingRange::TMeasurement m;
         m.range = float(r + rng.drawGaussian1D(0, cfg.rb.sigmaRange));
-        const double mb = b + rng.drawGaussian1D(0, cfg.rb.sigmaBearing);
-        m.yaw = float(std::atan2(std::sin(mb), std::cos(mb)));
+        m.yaw = floatBearing(b + rng.drawGaussian1D(0, cfg.rb.sigmaBearing));
+        // A sensor reports no range <= 0 (a landmark within the noise of the
+        // sensor's centre); the text format has none either.
+        if (!(m.range > 0)) continue;
         m.pitch = 0;
+        // The landmark's index in the map; simulate() renumbers them in order of
+        // first observation.
         m.landmarkID = int32_t(i);
         m.covariance.setZero();
         o->sensedData.push_back(m);
     }
+    // An empty observation has no textlog form (it would have no `rb` record).
+    if (o->sensedData.empty()) return nullptr;
     return o;
 }
 

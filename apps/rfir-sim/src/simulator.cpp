@@ -77,6 +77,15 @@ private:
     CPose2D K_, lift_;
 };
 
+/** CPose2D wraps headings into [-pi, pi); textlog angles are in (-pi, pi]:
+ * a heading of exactly -pi (a start facing -x) is stored as pi, the value the
+ * import of its text gives. */
+CPose2D textPose(CPose2D p)
+{
+    if (p.phi() == -M_PI) p.phi(M_PI);
+    return p;
+}
+
 rfir::common::TMapFile groundTruthMap(const TWorld& w)
 {
     using K = rfir::common::TMapEntry::Kind;
@@ -85,6 +94,32 @@ rfir::common::TMapFile groundTruthMap(const TWorld& w)
     for (const auto& e : w.emitters) m.push_back({K::Emitter, e.id, e.x, e.y, e.z, {}, {}});
     for (const auto& l : w.landmarks) m.push_back({K::Landmark, l.id, l.x, l.y, 0, {}, {}});
     return m;
+}
+/** Range-bearing landmark IDs in order of first observation, the header
+ * naming only the landmarks observed: the numbering the import gives a text
+ * log (whose `rb` records name landmarks), so that a simulated rawlog and its
+ * text export are the same log. The map keeps every landmark by name. */
+void numberLandmarks(const TWorld& w, TSimOutput& out)
+{
+    std::vector<int32_t> idOf(w.landmarks.size(), -1);
+    auto& names = out.header.rbLandmarkNames;
+    names.clear();
+    for (auto& s : out.steps)
+        for (auto& o : s.obs)
+        {
+            auto rb = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o);
+            if (!rb) continue;
+            for (auto& m : rb->sensedData)
+            {
+                auto& id = idOf.at(size_t(m.landmarkID));
+                if (id < 0)
+                {
+                    id = int32_t(names.size());
+                    names.push_back(w.landmarks[size_t(m.landmarkID)].id);
+                }
+                m.landmarkID = id;
+            }
+        }
 }
 }  // namespace
 
@@ -116,12 +151,8 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed)
     h.timestamp = mrpt::Clock::fromDouble(cfg.startTime);
     if (cfg.rfid.enabled) h.readers = cfg.readers;
     if (cfg.ir.enabled) h.receivers = cfg.receivers;
-    if (cfg.rb.enabled)
-    {
-        h.rbSensor = cfg.rbSensor;
-        for (const auto& l : world.landmarks) h.rbLandmarkNames.push_back(l.id);
-    }
-    h.startPose = tl.truePose(0);
+    if (cfg.rb.enabled) h.rbSensor = cfg.rbSensor;  // landmark names: numberLandmarks()
+    h.startPose = textPose(tl.truePose(0));
 
     double end = tl.end();
     if (cfg.maxDuration > 0) end = std::min(end, cfg.maxDuration);
@@ -140,21 +171,24 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed)
         prevWheels = wheels;
         const bool carried = tl.carried(e);
         if (!carried || cfg.kidnap.odometry == TKidnapConfig::Odometry::Frozen)
-            s.odometry = odom;
+            s.odometry = textPose(odom);
         if (!carried)
         {
             if (cfg.rfid.enabled) s.obs.push_back(senseRFID(cfg, world, s.truePose, rngRFID));
             const long irSlot = long(std::floor(e / cfg.ir.period + 1e-9));
             if (cfg.ir.enabled && irSlot != lastIR)
             {
-                s.obs.push_back(senseIR(cfg, world, s.truePose, rngIR));
+                // nullptr: no receiver saw anything (decoded output).
+                if (auto o = senseIR(cfg, world, s.truePose, rngIR)) s.obs.push_back(o);
                 lastIR = irSlot;
             }
-            if (cfg.rb.enabled) s.obs.push_back(senseRB(cfg, world, s.truePose, rngRB));
+            if (cfg.rb.enabled)
+                if (auto o = senseRB(cfg, world, s.truePose, rngRB)) s.obs.push_back(o);
         }
         out.groundTruth.push_back({s.t, s.truePose});
         out.steps.push_back(std::move(s));
     }
+    if (cfg.rb.enabled) numberLandmarks(world, out);
     for (double sp : plan.spotTimes())
         for (double t : tl.realTimes(sp))
             if (t <= end) out.spots.push_back({cfg.startTime + t, tl.truePose(t)});
@@ -168,12 +202,23 @@ void writeOutputs(const TSimOutput& out, const std::string& dir, const std::stri
 {
     const std::string base = dir + "/" + name;
     {
-        rfir::common::CRawlogWriter w(base + ".rawlog", out.header);
+        // A step with neither odometry nor observation (carried with
+        // `odometry = stop`) is not written: an instant of a textlog has at
+        // least one record. The header is stamped with the first instant's time,
+        // as the import does.
+        auto header = out.header;
+        for (const auto& s : out.steps)
+            if (s.odometry || !s.obs.empty())
+            {
+                header.timestamp = mrpt::Clock::fromDouble(s.t);
+                break;
+            }
+        rfir::common::CRawlogWriter w(base + ".rawlog", header);
         const size_t n = out.steps.size();
         for (size_t k = 0; k < n; k++)
         {
             const auto& s = out.steps[k];
-            w.writeStep(s.t, s.odometry, s.obs);
+            if (s.odometry || !s.obs.empty()) w.writeStep(s.t, s.odometry, s.obs);
             if (progress && n >= 1000 && (k + 1) % (n / 10) == 0)
                 *progress << "rfir-sim: wrote " << (k + 1) << "/" << n << " steps\n";
         }

@@ -71,6 +71,12 @@ rfir::obs::CObservationLogHeader toLogHeader(const TTextLogHeader& h,
                                              double t0);
 TTextLogHeader fromLogHeader(const rfir::obs::CObservationLogHeader& h);
 
+/** The import's reading of the IR records of one instant: every receiver of
+ * the header that no reading names saw nothing and gets a reading with no
+ * code, 0 V and no raw window, appended in header order (docs/import.md). */
+void addDarkReceivers(const rfir::obs::CObservationLogHeader& hdr,
+                      rfir::obs::CObservationIRSignals& ir);
+
 /** Builds the observations of one sensing instant from its records. */
 class CInstantBuilder {
   public:

@@ -9,7 +9,8 @@
 #   bash scripts/bench.sh --quick         # smoke run (seconds), docs untouched
 #   bash scripts/bench.sh --out /tmp/b    # full run, results in /tmp/b only
 # Other options are passed to rfir-bench (see rfir-bench --help).
-# Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs).
+# Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs),
+# RFIR_BENCH_NO_BUILD=1 (use the rfir-bench already built).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${RFIR_BUILD_DIR:-build}
@@ -26,10 +27,12 @@ while (($#)); do
   esac
 done
 
-if [ ! -f "$BUILD/CMakeCache.txt" ]; then
-  cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+if [ "${RFIR_BENCH_NO_BUILD:-0}" != 1 ]; then
+  if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+    cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$BUILD" -j"$JOBS" --target rfir-bench
 fi
-cmake --build "$BUILD" -j"$JOBS" --target rfir-bench
 
 update_docs=0
 if [ -z "$out" ]; then

@@ -48,6 +48,10 @@ void printCases(const char* title, const std::vector<TCaseResult>& v, std::ostre
                    methodLabel(c.method), c.M, c.N, c.medianUs, c.p90Us, c.meanUs,
                    c.wallMedianUs, c.floorRatio, c.vsPsRatio, c.stateBytes / 1e6, c.peakBytes / 1e6,
                    c.buildSeconds);
+        if (c.tagsMapped != c.N)
+            out << row("    ^ only %zu of the %zu tags were mapped: the state is not the one "
+                       "asked for\n",
+                       c.tagsMapped, c.N);
     }
     out << "\n";
 }

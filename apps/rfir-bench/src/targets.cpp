@@ -51,7 +51,16 @@ TTarget flatInN(const TBenchReport& r, const std::string& method, const std::str
     double worst = 0;
     for (const auto& c : r.sweepN)
         if (c.method == method && !c.skipped)
+        {
             worst = std::max(worst, std::fabs(c.medianUs / lo->medianUs - 1));
+            if (c.tagsMapped != c.N)
+            {
+                t.measured = false;
+                t.detail = fmt("the state at N = %.0f has only %.0f tags", double(c.N),
+                               double(c.tagsMapped));
+                return t;
+            }
+        }
     t.pass = worst <= 0.20;
     t.detail = fmt("M = %.0f: %.1f us at N = 10, %.1f us at N = 100000; largest deviation "
                    "over the sweep %.0f %%",

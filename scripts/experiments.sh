@@ -23,6 +23,11 @@ args=("$@")
 has_out=0
 for a in "${args[@]}"; do [ "$a" = "--out" ] && has_out=1; done
 [ $has_out -eq 1 ] || args+=(--out docs)
-# The source tree's INIs (the build's copy is refreshed only at configure time).
-exec "$BUILD/bin/rfir-experiments" --config-dir config_ini \
+# A snapshot of the source tree's INIs (the build's copy is refreshed only at
+# configure time; a snapshot keeps a long run consistent if they are edited).
+CFG=$(mktemp -d)
+trap 'rm -rf "$CFG"' EXIT
+cp config_ini/*.ini "$CFG"/
+REV=$(git describe --always --dirty 2>/dev/null || echo unknown)
+"$BUILD/bin/rfir-experiments" --config-dir "$CFG" --revision "$REV" \
   --notes apps/rfir-experiments/notes.md "${args[@]}"

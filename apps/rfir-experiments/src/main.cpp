@@ -136,6 +136,10 @@ int main(int argc, char** argv) {
             false, exeDir() + "/../share/rfir/config_ini", "DIR", cmd);
         TCLAP::ValueArg<std::string> notes("", "notes", "markdown inserted in results.md",
                                            false, "", "FILE", cmd);
+        TCLAP::ValueArg<std::string> revision("", "revision",
+                                              "source revision to record in "
+                                              "the report (e.g. git describe)",
+                                              false, "", "TEXT", cmd);
         TCLAP::SwitchArg noFig("", "no-figures", "do not draw the PNG figures", cmd);
         if (!cmd.parse(argc, argv)) return 0;
 
@@ -150,6 +154,7 @@ int main(int argc, char** argv) {
         if (n == 0) throw std::invalid_argument("--seeds must be at least 1");
         TMeta meta;
         meta.quick = quick.getValue();
+        meta.revision = revision.getValue();
         for (unsigned i = 0; i < n; i++) meta.seeds.push_back(firstSeed.getValue() + i);
         for (int i = 0; i < argc; i++)
             meta.commandLine +=

@@ -2,6 +2,7 @@
 #include "report.h"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace rfir::experiments {
@@ -21,7 +22,9 @@ std::string sweepSection(const TRowResults& r) {
     for (size_t i = 0; i < cols; i++) o << " ---: |";
     o << "\n";
     for (size_t p = 0; p < r.row.points.size(); p++) {
-        o << "| " << fmt(r.row.points[p].x, 0) << " |";
+        char x[32];
+        std::snprintf(x, sizeof(x), "%g", r.row.points[p].x);
+        o << "| " << x << " |";
         for (const auto& m : r.row.methods)
             o << " " << fmtPM(statOf(perSeed(r, p, m.label, robotMeanDist)), 1e3, 1)
               << " / " << fmtPM(statOf(perSeed(r, p, m.label, tagMeanDist)), 1e3, 1)

@@ -24,6 +24,7 @@ struct TMeta {
     std::vector<uint64_t> seeds;
     bool quick = false;
     std::string commandLine;
+    std::string revision;  //!< source revision (--revision), for the record
     double wallSeconds = 0;
 };
 

@@ -62,6 +62,17 @@ std::string cleanMessage(const std::exception& e) {
     return out.empty() ? std::string(e.what()) : out;
 }
 
+void applyOverrides(mrpt::config::CConfigFileBase& c,
+                    const std::vector<std::string>& overrides) {
+    for (const auto& o : overrides) {
+        const auto eq = o.find('='), dot = o.rfind('.', eq);
+        if (eq == std::string::npos || dot == std::string::npos || dot == 0 ||
+            dot + 1 >= eq)
+            throw std::runtime_error("--set '" + o + "': expected SECTION.KEY=VALUE");
+        c.write(o.substr(0, dot), o.substr(dot + 1, eq - dot - 1), o.substr(eq + 1));
+    }
+}
+
 std::string stockIniPath() {
     char buf[4096];
     const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
@@ -87,6 +98,7 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
     }
     std::string ef;
     try {
+        applyOverrides(c, cfg.overrides);
         checkSections(c, cfg.iniPath);
         cfg.params.loadFromConfigFile(c, "");
         // The map as MRPT builds its own: initializers, then a multi-map. Set
@@ -131,7 +143,9 @@ std::string settingsIni(const TConfig& cfg, const std::string& commandLine) {
     o << "# rfir-localize effective settings; rerun with --config this_file\n"
       << "# " << commandLine << "\n"
       << "# rawlog = " << cfg.rawlogPath << "\n# seed = " << cfg.seed
-      << "\n# mode = " << (cfg.odometryOnly ? "odometry-only" : "monte-carlo") << "\n\n";
+      << "\n# mode = " << (cfg.odometryOnly ? "odometry-only" : "monte-carlo") << "\n";
+    for (const auto& s : cfg.overrides) o << "# --set " << s << "\n";
+    o << "\n";
     cfg.params.dumpToTextStream(o);
     o << "\n[MetricMap]\nirEmitterMap_count = 1\n\n[" << kMapPrefix
       << "_creationOpts]\nemitter_file = " << cfg.emitterPath << "\n\n[" << kMapPrefix

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rfir::localize {
 struct TConfig {
@@ -16,9 +17,16 @@ struct TConfig {
     uint64_t seed = 1;
     bool odometryOnly = false;
     bool quiet = false;
+    /** "SECTION.KEY=VALUE" written over the INI before it is read (--set). */
+    std::vector<std::string> overrides;
     rfir::ir::TLocalizerParams params;
     std::shared_ptr<rfir::maps::CIREmitterMap> map;
 };
+
+/** Writes "SECTION.KEY=VALUE" entries into a config (the section may contain
+ * dots: the last dot before '=' splits). Throws on a malformed entry. */
+void applyOverrides(mrpt::config::CConfigFileBase& c,
+                    const std::vector<std::string>& overrides);
 
 /** The text of an exception without MRPT's banners and backtrace. */
 std::string cleanMessage(const std::exception& e);

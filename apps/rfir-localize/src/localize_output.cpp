@@ -22,7 +22,6 @@ std::string rawlogStem(const std::string& p) {
     return p;
 }
 
-namespace {
 /** The path's pose at each spot time (the latest pose not after it). */
 TPath2D atSpots(const TPath2D& path, const TPath2D& spots) {
     TPath2D out;
@@ -34,6 +33,7 @@ TPath2D atSpots(const TPath2D& path, const TPath2D& spots) {
     return out;
 }
 
+namespace {
 struct TEvals {
     std::vector<rfir::eval::TEvalResult> rows;
     std::optional<TPath2D> gt;

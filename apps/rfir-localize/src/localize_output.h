@@ -13,6 +13,11 @@ namespace rfir::localize {
 std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
                          const std::string& commandLine);
 
+/** The path's pose at each spot time (the latest pose not after it); spots
+ * before the path's start are left out. */
+rfir::common::TPath2D atSpots(const rfir::common::TPath2D& path,
+                              const rfir::common::TPath2D& spots);
+
 /** `<stem>` of a rawlog path: the path without its ".rawlog" extension. */
 std::string rawlogStem(const std::string& rawlogPath);
 

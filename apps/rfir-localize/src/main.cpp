@@ -81,6 +81,11 @@ int main(int argc, char** argv) {
     TCLAP::SwitchArg odoOnly("", "odometry-only",
                              "dead reckoning only, from the start pose (comparison)",
                              cmd);
+    TCLAP::MultiArg<std::string> sets(
+        "", "set",
+        "override an INI key: SECTION.KEY=VALUE (repeatable), "
+        "e.g. --set localization.num_particles=300",
+        false, "SECTION.KEY=VALUE", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr, no table on stdout",
                            cmd);
     try {
@@ -94,6 +99,7 @@ int main(int argc, char** argv) {
         cfg.seed = seed.getValue();
         cfg.odometryOnly = odoOnly.getValue();
         cfg.quiet = quiet.getValue();
+        cfg.overrides = sets.getValue();
         return run(cfg, emitters.getValue(), joinArgs(argc, argv));
     } catch (const TCLAP::ArgException& e) {
         std::cerr << "rfir-localize: error: " << e.error() << " (" << e.argId() << ")\n";

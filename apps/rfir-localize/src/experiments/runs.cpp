@@ -1,0 +1,152 @@
+/* rfir-ir-experiments: runs and aggregation. */
+#include "runs.h"
+
+#include "localize_config.h"
+#include "localize_output.h"
+#include "localize_run.h"
+
+#include <rfir/common/map_io.h>
+#include <rfir/sim/simulator.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+
+namespace rfir::irexp {
+namespace fs = std::filesystem;
+
+namespace {
+std::string join(const std::vector<std::string>& v, const char* sep) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
+    return s;
+}
+
+/** The simulated data set of (ini, sets, seed), written once. */
+std::string dataset(const TSession& s, const TRunSpec& spec, uint64_t seed) {
+    const std::string key =
+        spec.simIni + "|" + join(spec.simSets, ";") + "|" + std::to_string(seed);
+    const std::string dir =
+        s.workDir + "/data/" + std::to_string(std::hash<std::string>()(key));
+    if (!fs::exists(dir + "/run.rawlog")) {
+        fs::create_directories(dir);
+        const auto cfg =
+            rfir::sim::loadSimConfig(s.configDir + "/" + spec.simIni, spec.simSets);
+        rfir::sim::writeOutputs(rfir::sim::simulate(cfg, seed), dir, "run");
+    }
+    return dir;
+}
+
+/** The ground-truth emitters minus the absent IDs. */
+std::string emitterFile(const std::string& dir, const std::vector<std::string>& absent) {
+    if (absent.empty()) return dir + "/run.gt_map.txt";
+    const std::string f = dir + "/emitters_without_" + join(absent, "_") + ".txt";
+    if (fs::exists(f)) return f;
+    rfir::common::TMapFile m;
+    for (const auto& e : rfir::common::loadMapFile(dir + "/run.gt_map.txt"))
+        if (e.kind == rfir::common::TMapEntry::Kind::Emitter &&
+            std::find(absent.begin(), absent.end(), e.id) == absent.end())
+            m.push_back(e);
+    rfir::common::saveMapFile(f, m);
+    return f;
+}
+
+void score(const rfir::localize::TRunResult& res, const std::string& dir,
+           TRunMetrics& m) {
+    const auto gt = rfir::common::loadTUM(dir + "/run.gt.tum");
+    if (res.path.empty()) return;
+    const double t0 = gt.front().t;
+    m.started = true;
+    m.tStart = res.path.front().t - t0;
+    const auto e = rfir::eval::computeRobotErrors(res.path, gt);
+    m.path = e.stats;
+    std::vector<rfir::eval::TPoseError> late;
+    for (const auto& q : e.perPose)
+        if (q.t > res.path.front().t + 10) late.push_back(q);
+    if (!late.empty()) m.settled = rfir::eval::statsOf(late);
+    if (fs::exists(dir + "/run.spots.tum")) {
+        const auto spots = rfir::common::loadTUM(dir + "/run.spots.tum");
+        const auto est = rfir::localize::atSpots(res.path, spots);
+        if (!est.empty()) {
+            const auto se = rfir::eval::computeRobotErrors(est, spots);
+            m.spots = se.stats;
+            std::vector<rfir::eval::TPoseError> later;
+            for (const auto& q : se.perPose)
+                if (q.t > res.path.front().t + 10) later.push_back(q);
+            if (!later.empty()) m.spotsSettled = rfir::eval::statsOf(later);
+        }
+    }
+}
+}  // namespace
+
+TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
+                   const std::string& outDir) {
+    const std::string dir = dataset(s, spec, seed);
+    rfir::localize::TConfig cfg;
+    cfg.iniPath = s.configDir + "/ir_localize.ini";
+    cfg.rawlogPath = dir + "/run.rawlog";
+    cfg.seed = seed;
+    cfg.odometryOnly = spec.odometryOnly;
+    cfg.quiet = true;
+    cfg.overrides = spec.locSets;
+    cfg.outDir = outDir;
+    rfir::localize::loadConfig(cfg, emitterFile(dir, spec.absentIds));
+    const auto gt = rfir::common::loadTUM(dir + "/run.gt.tum");
+    const auto res = rfir::localize::runLocalization(cfg, gt.front().pose);
+    TRunMetrics m;
+    m.resetEvents = res.resetEvents;
+    m.seconds = res.seconds;
+    score(res, dir, m);
+    if (!outDir.empty()) {
+        fs::create_directories(outDir);
+        rfir::localize::writeOutputs(cfg, res, "rfir-ir-experiments");
+    }
+    return m;
+}
+
+std::vector<TRunMetrics> runSeeds(const TSession& s, const TRunSpec& spec, int n,
+                                  int firstSeed) {
+    std::vector<TRunMetrics> out;
+    for (int k = 0; k < n; k++) out.push_back(runOne(s, spec, uint64_t(firstSeed + k)));
+    return out;
+}
+
+namespace {
+void accumulate(rfir::eval::TErrorStats& a, const rfir::eval::TErrorStats& b, size_t n) {
+    a.count += b.count;
+    a.mean_dx += b.mean_dx / n;
+    a.mean_dy += b.mean_dy / n;
+    a.mean_dtheta += b.mean_dtheta / n;
+    a.mean_dist += b.mean_dist / n;
+    a.max_dx = std::max(a.max_dx, b.max_dx);
+    a.max_dy = std::max(a.max_dy, b.max_dy);
+    a.max_dtheta = std::max(a.max_dtheta, b.max_dtheta);
+    a.max_dist = std::max(a.max_dist, b.max_dist);
+}
+}  // namespace
+
+TAggregate aggregate(const std::vector<TRunMetrics>& runs) {
+    TAggregate a;
+    a.runs = runs.size();
+    for (const auto& r : runs) a.started += r.started;
+    size_t np = 0, ns = 0, nq = 0, nqs = 0;
+    for (const auto& r : runs) {
+        np += bool(r.path);
+        ns += bool(r.settled);
+        nq += bool(r.spots);
+        nqs += bool(r.spotsSettled);
+    }
+    for (const auto& r : runs) {
+        if (r.path) accumulate(a.path, *r.path, np);
+        if (r.settled) accumulate(a.settled, *r.settled, ns);
+        if (r.spots) accumulate(a.spots, *r.spots, nq);
+        if (r.spotsSettled) accumulate(a.spotsSettled, *r.spotsSettled, nqs);
+        if (r.started) a.meanStart += r.tStart / double(a.started);
+    }
+    a.hasPath = np > 0;
+    a.hasSpots = nq > 0;
+    return a;
+}
+
+}  // namespace rfir::irexp

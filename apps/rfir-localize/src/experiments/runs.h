@@ -1,0 +1,58 @@
+/* rfir-ir-experiments: one localization run on simulated data, its metrics,
+ * and their aggregation over seeds. */
+#pragma once
+
+#include <rfir/eval/metrics.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rfir::irexp {
+struct TRunSpec {
+    explicit TRunSpec(std::string ini = {}) : simIni(std::move(ini)) {}
+    std::string simIni;                  //!< file name in the config folder
+    std::vector<std::string> simSets;    //!< rfir-sim --set entries
+    std::vector<std::string> locSets;    //!< rfir-localize --set entries
+    std::vector<std::string> absentIds;  //!< emitter IDs left out of the map
+    bool odometryOnly = false;
+};
+
+struct TRunMetrics {
+    bool started = false;
+    double tStart = 0;  //!< first unique ID (s from the first instant)
+    std::optional<rfir::eval::TErrorStats> path;          //!< from the first unique ID
+    std::optional<rfir::eval::TErrorStats> settled;       //!< from 10 s after it
+    std::optional<rfir::eval::TErrorStats> spots;         //!< at the marked spots
+    std::optional<rfir::eval::TErrorStats> spotsSettled;  //!< spots from 10 s after it
+    size_t resetEvents = 0;
+    double seconds = 0;  //!< filter wall-clock time
+};
+
+/** Shared settings of a session. */
+struct TSession {
+    std::string configDir;  //!< config_ini of the source tree
+    std::string workDir;    //!< rawlogs and per-run outputs
+    bool verbose = true;
+};
+
+/** Simulates (once per spec and seed: cached in workDir), localizes through
+ * the same code as rfir-localize, scores. `outDir` non-empty: also writes the
+ * rfir-localize outputs there (path.tum, path.png, ...). */
+TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
+                   const std::string& outDir = {});
+
+/** Over seeds: means of the per-run means, max of the per-run maxima. */
+struct TAggregate {
+    size_t runs = 0, started = 0;
+    rfir::eval::TErrorStats path, settled, spots, spotsSettled;
+    bool hasSpots = false, hasPath = false;
+    double meanStart = 0;
+};
+TAggregate aggregate(const std::vector<TRunMetrics>& runs);
+
+/** Runs a spec over seeds 1..n. */
+std::vector<TRunMetrics> runSeeds(const TSession& s, const TRunSpec& spec, int n,
+                                  int firstSeed = 1);
+
+}  // namespace rfir::irexp

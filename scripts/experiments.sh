@@ -23,11 +23,18 @@ args=("$@")
 has_out=0
 for a in "${args[@]}"; do [ "$a" = "--out" ] && has_out=1; done
 [ $has_out -eq 1 ] || args+=(--out docs)
-# A snapshot of the source tree's INIs (the build's copy is refreshed only at
-# configure time; a snapshot keeps a long run consistent if they are edited).
+# A snapshot of the INIs, as committed (uncommitted edits are not used; files
+# git does not track are taken as they are): the build's copy is refreshed only
+# at configure time, and a snapshot keeps a long run consistent.
 CFG=$(mktemp -d)
 trap 'rm -rf "$CFG"' EXIT
-cp config_ini/*.ini "$CFG"/
+for f in config_ini/*.ini; do
+  if git cat-file -e "HEAD:$f" 2>/dev/null; then
+    git show "HEAD:$f" > "$CFG/$(basename "$f")"
+  else
+    cp "$f" "$CFG/"
+  fi
+done
 REV=$(git describe --always --dirty 2>/dev/null || echo unknown)
 "$BUILD/bin/rfir-experiments" --config-dir "$CFG" --revision "$REV" \
   --notes apps/rfir-experiments/notes.md "${args[@]}"

@@ -42,6 +42,8 @@ struct TPoint {
     double x = 0;
     std::vector<std::string> simOverrides;  //!< applied after the sub-run's
     std::vector<std::string> slamEdits;     //!< applied to every method
+    /** > 0: every [odometry] noise parameter of the sim INI times this. */
+    double odometryScale = 0;
 };
 
 enum class TRowKind {

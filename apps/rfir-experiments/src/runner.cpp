@@ -100,6 +100,12 @@ TDataSet simulateDataSet(const std::string& configDir, const TSubRun& run,
     ov.insert(ov.end(), point.simOverrides.begin(), point.simOverrides.end());
     TDataSet d;
     d.cfg = rfir::sim::loadSimConfig(configDir + "/" + run.simIni, ov);
+    if (point.odometryScale > 0) {
+        auto& o = d.cfg.odometry;
+        for (double* v : {&o.kXY, &o.kPhiRot, &o.kPhiXY, &o.scaleSigma, &o.rotScaleSigma,
+                          &o.headingDriftSigma})
+            *v *= point.odometryScale;
+    }
     d.sim = rfir::sim::simulate(d.cfg, seed);
     if (!d.sim.header.readers.empty())
         d.passed = rfir::eval::tagsPassedOver(d.sim.gtMap, d.sim.groundTruth,

@@ -19,7 +19,8 @@ namespace {
 /** Every stock simulation INI, by stem. */
 std::vector<std::string> stockSimInis() {
     std::vector<std::string> v;
-    for (const auto& e : fs::directory_iterator(std::string(RFIR_SOURCE_DIR) + "/config_ini")) {
+    for (const auto& e :
+         fs::directory_iterator(std::string(RFIR_SOURCE_DIR) + "/config_ini")) {
         const std::string n = e.path().filename().string();
         if (n.rfind("sim_", 0) == 0 && e.path().extension() == ".ini")
             v.push_back(e.path().stem().string());
@@ -121,8 +122,9 @@ TEST(RoundTrip, EveryStockSimulationSurvivesTextAndBack) {
                       << "\n";
         all.ir += c.ir, all.irDark += c.irDark, all.irRaw += c.irRaw, all.rb += c.rb;
     }
-    std::cout << "IR readings " << all.ir << " (nothing in view " << all.irDark << ", raw "
-              << all.irRaw << "), range-bearing measurements " << all.rb << "\n";
+    std::cout << "IR readings " << all.ir << " (nothing in view " << all.irDark
+              << ", raw " << all.irRaw << "), range-bearing measurements " << all.rb
+              << "\n";
     // Each kind went through: negative IR readings survive the text.
     EXPECT_GT(all.irDark, 20u);
     EXPECT_GT(all.irRaw, 40u);
@@ -134,15 +136,16 @@ TEST(RoundTrip, KidnappingHeadingPiAndSlowIR) {
     // is not written), a start facing -x (heading pi, which CPose2D would
     // store as -pi), IR read every third step.
     for (const char* odo : {"frozen", "stop"})
-        roundTrip("sim_kidnap", {"kidnap.time=6", "kidnap.to_time=2", "kidnap.carry_time=1.5",
-                                 std::string("kidnap.odometry=") + odo,
-                                 "simulation.max_duration=12"});
+        roundTrip("sim_kidnap",
+                  {"kidnap.time=6", "kidnap.to_time=2", "kidnap.carry_time=1.5",
+                   std::string("kidnap.odometry=") + odo, "simulation.max_duration=12"});
     roundTrip("sim_rfid_60mm_16tags_loop",
               {"kidnap.enabled=true", "kidnap.time=0", "kidnap.odometry=stop",
                "kidnap.to_pose=1 1 0", "simulation.max_duration=5"});
     roundTrip("sim_rb_norotation",
               {"trajectory.start_phi_deg=180", "simulation.max_duration=10"});
-    roundTrip("sim_rb_rotation", {"trajectory.rotation=spin", "simulation.max_duration=20"});
+    roundTrip("sim_rb_rotation",
+              {"trajectory.rotation=spin", "simulation.max_duration=20"});
     roundTrip("sim_ir_loop", {"trajectory.start_phi_deg=180", "ir.period=0.3",
                               "simulation.max_duration=15"});
 }
@@ -198,9 +201,10 @@ TEST(RoundTrip, IRObservationWithNothingInViewIsRefused) {
         convertRawlogToTextLog(d / "x.rawlog", d / "x.txt");
         FAIL();
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find(
-                      "instant 1 (t 1): IR observation in which no receiver sees anything"),
-                  std::string::npos)
+        EXPECT_NE(
+            std::string(e.what()).find(
+                "instant 1 (t 1): IR observation in which no receiver sees anything"),
+            std::string::npos)
             << e.what();
     }
     EXPECT_FALSE(fs::exists(d / "x.txt"));

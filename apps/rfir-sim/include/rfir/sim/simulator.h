@@ -203,7 +203,10 @@ struct TSimStep
 {
     double t = 0;
     std::optional<mrpt::poses::CPose2D> odometry;  //!< absolute odometry pose
-    std::vector<mrpt::obs::CObservation::Ptr> obs;  //!< labels RFID, IR, RB
+    /** Labels RFID, IR, RB; IR and RB only when something is in view, in the
+     * form a text log's import gives (docs/simulator.md, "Rawlogs and the
+     * text format"). */
+    std::vector<mrpt::obs::CObservation::Ptr> obs;
     mrpt::poses::CPose2D truePose;
 };
 

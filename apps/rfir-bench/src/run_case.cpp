@@ -4,7 +4,8 @@
 
 #include <rfir/slam/slam_config.h>
 
-#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/vector_loadsave.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/filesystem.h>
 
@@ -15,27 +16,25 @@
 #include <numeric>
 #include <stdexcept>
 
-namespace rfir::bench
-{
+namespace rfir::bench {
 using Clock = std::chrono::steady_clock;
 
 rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& method,
-                                    size_t M)
-{
+                                    size_t M) {
     const std::string path = o.configDir + "/slam_" + method + ".ini";
     if (!mrpt::system::fileExists(path))
         throw std::runtime_error("cannot read the stock INI '" + path + "'");
-    mrpt::config::CConfigFile f(path);
+    // Edit a memory copy: a CConfigFile writes its edits back into the stock INI.
+    mrpt::config::CConfigFileMemory f;
+    f.setContent(mrpt::io::file_get_contents(path));
     f.write("slam", "robot_particles", std::to_string(M));
     auto cfg = rfir::slam::loadSlamConfig(f, method);
     cfg.seed = o.seed;
     return cfg;
 }
 
-namespace
-{
-double percentile(std::vector<double> v, double q)
-{
+namespace {
+double percentile(std::vector<double> v, double q) {
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
     const size_t i = std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5));
@@ -45,16 +44,16 @@ double percentile(std::vector<double> v, double q)
 /** Runs one step; samples the heap only when asked, because mallinfo2 walks
  * the allocator's free lists: that costs milliseconds on a large heap and
  * evicts the caches a following timed step would find warm. */
-struct TStepper
-{
+struct TStepper {
     rfir::slam::CSlamEngine& engine;
     size_t base;
     size_t peak = 0;
     double lastWall = 0;
-    void samplePeak() { peak = std::max(peak, heapInUse() - std::min(base, heapInUse())); }
+    void samplePeak() {
+        peak = std::max(peak, heapInUse() - std::min(base, heapInUse()));
+    }
     /** Returns the step's thread CPU time; lastWall gets its wall time. */
-    double step(const rfir::slam::TSlamInput& in)
-    {
+    double step(const rfir::slam::TSlamInput& in) {
         const double w0 = wallSeconds(), c0 = threadCpuSeconds();
         engine.step(in);
         const double dt = threadCpuSeconds() - c0;
@@ -64,14 +63,13 @@ struct TStepper
 };
 }  // namespace
 
-TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M, size_t N)
-{
+TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
+                    size_t N) {
     TCaseResult r;
     r.method = method;
     r.M = M;
     r.N = N;
-    if (method == "fastslam" && double(M) * double(N) > o.maxFastSlamMN)
-    {
+    if (method == "fastslam" && double(M) * double(N) > o.maxFastSlamMN) {
         r.skipped = true;
         r.skipReason = "M*N above --max-fastslam-mn";
         return r;
@@ -85,8 +83,7 @@ TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
         engine->reset(mrpt::poses::CPose2D(0, 0, 0));
         TStepper st{*engine, base};
         const auto t0 = Clock::now();
-        for (size_t i = 0; i < drive.populationSteps(); i++)
-        {
+        for (size_t i = 0; i < drive.populationSteps(); i++) {
             st.step(drive.populationStep(i));
             if (i % 16 == 15) st.samplePeak();
         }
@@ -94,19 +91,21 @@ TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
         r.buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
         for (size_t k = 0; k < o.warmupUpdates; k++) st.step(drive.timedStep(k));
         std::vector<double> us, wall;
-        for (size_t k = 0; k < o.timedUpdates; k++)
-        {
+        for (size_t k = 0; k < o.timedUpdates; k++) {
             // Inputs are built outside the timed call.
             const auto in = drive.timedStep(o.warmupUpdates + k);
             us.push_back(1e6 * st.step(in));
             wall.push_back(1e6 * st.lastWall);
-            if (std::getenv("RFIR_BENCH_TRACE")) std::fprintf(stderr, "%zu %.1f\n", k, us.back());
+            if (std::getenv("RFIR_BENCH_TRACE"))
+                std::fprintf(stderr, "%zu %.1f\n", k, us.back());
         }
         r.updates = us.size();
         r.medianUs = percentile(us, 0.5);
         r.p90Us = percentile(us, 0.9);
         r.wallMedianUs = percentile(wall, 0.5);
-        r.meanUs = us.empty() ? 0 : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
+        r.meanUs = us.empty()
+                       ? 0
+                       : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
         st.samplePeak();
         r.stateBytes = heapInUse() - std::min(base, heapInUse());
         r.peakBytes = std::max(st.peak, r.stateBytes);

@@ -2,36 +2,33 @@
 // options fail with a message. Nothing here depends on how fast the machine is.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
-#include <sys/wait.h>
 
-namespace
-{
+namespace {
 const std::string kBench = std::string(RFIR_BINARY_DIR) + "/bin/rfir-bench";
 
-struct TRun
-{
+struct TRun {
     int status = -1;
     std::string out, err;
 };
 
-std::string slurp(const std::string& path)
-{
+std::string slurp(const std::string& path) {
     std::ifstream f(path);
     std::stringstream ss;
     ss << f.rdbuf();
     return ss.str();
 }
 
-TRun run(const std::string& args, const std::string& dir)
-{
+TRun run(const std::string& args, const std::string& dir) {
     TRun r;
-    const std::string cmd = kBench + " " + args + " > " + dir + "/out.txt 2> " + dir + "/err.txt";
+    const std::string cmd =
+        kBench + " " + args + " > " + dir + "/out.txt 2> " + dir + "/err.txt";
     const int st = std::system(cmd.c_str());
     r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
     r.out = slurp(dir + "/out.txt");
@@ -39,41 +36,39 @@ TRun run(const std::string& args, const std::string& dir)
     return r;
 }
 
-size_t count(const std::string& s, const std::string& what)
-{
+size_t count(const std::string& s, const std::string& what) {
     size_t n = 0;
     for (size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) n++;
     return n;
 }
 
-std::string tempDir()
-{
+std::string tempDir() {
     char tmpl[] = "/tmp/rfir_bench_smoke_XXXXXX";
     const char* d = ::mkdtemp(tmpl);
     if (!d) throw std::runtime_error("mkdtemp failed");
     return d;
 }
 
-long fileSize(const std::string& p)
-{
+long fileSize(const std::string& p) {
     struct stat st;
     return ::stat(p.c_str(), &st) == 0 ? long(st.st_size) : -1;
 }
 }  // namespace
 
-TEST(BenchSmoke, TinyRunReportsEveryCase)
-{
+TEST(BenchSmoke, TinyRunReportsEveryCase) {
     const std::string dir = tempDir();
-    const TRun r = run("--quick --m 100 --n 10,100 --updates 5 --realtime-seconds 20 --json " +
-                           dir + "/b.json --plots " + dir,
-                       dir);
+    const TRun r =
+        run("--quick --m 100 --n 10,100 --updates 5 --realtime-seconds 20 --json " + dir +
+                "/b.json --plots " + dir,
+            dir);
     ASSERT_EQ(r.status, 0) << r.err;
     // Table: the floor, both sweeps, the whole runs and six targets.
     EXPECT_NE(r.out.find("floor (motion noise draw"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("time and memory against M"), std::string::npos);
     EXPECT_NE(r.out.find("time and memory against N"), std::string::npos);
     EXPECT_NE(r.out.find("whole offline runs"), std::string::npos);
-    EXPECT_EQ(count(r.out, "PASS  ") + count(r.out, "FAIL  ") + count(r.out, "n/a   "), 6u)
+    EXPECT_EQ(count(r.out, "PASS  ") + count(r.out, "FAIL  ") + count(r.out, "n/a   "),
+              6u)
         << r.out;
     // One row per method in the sweep over M (1 value) and over N (2 values),
     // plus the whole runs (M = 100 and 500).
@@ -94,13 +89,12 @@ TEST(BenchSmoke, TinyRunReportsEveryCase)
     EXPECT_EQ(count(js, "\"landmarks\": 10}"), 3u) << js;
     EXPECT_EQ(count(js, "\"landmarks\": 100}"), 3u);
     EXPECT_EQ(js.find("nan"), std::string::npos);
-    for (const char* png : {"bench_time_vs_M.png", "bench_time_vs_N.png",
-                            "bench_memory_vs_N.png"})
+    for (const char* png :
+         {"bench_time_vs_M.png", "bench_time_vs_N.png", "bench_memory_vs_N.png"})
         EXPECT_GT(fileSize(dir + "/" + png), 1000) << png;
 }
 
-TEST(BenchSmoke, BadOptionsAreRejected)
-{
+TEST(BenchSmoke, BadOptionsAreRejected) {
     const std::string dir = tempDir();
     TRun r = run("--n 5", dir);
     EXPECT_NE(r.status, 0);

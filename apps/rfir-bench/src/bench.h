@@ -8,11 +8,9 @@
 #include <string>
 #include <vector>
 
-namespace rfir::bench
-{
+namespace rfir::bench {
 /** What one run measures (the command line). */
-struct TBenchOptions
-{
+struct TBenchOptions {
     std::vector<size_t> sweepM{100, 200, 500, 1000, 2000, 5000};
     std::vector<size_t> sweepN{10, 100, 1000, 10000, 100000};
     size_t fixedN = 1000;  //!< tags mapped in the sweep over M
@@ -40,8 +38,7 @@ double threadCpuSeconds();
 double wallSeconds();
 
 /** One method at one (M, N). */
-struct TCaseResult
-{
+struct TCaseResult {
     std::string method;
     size_t M = 0, N = 0;
     bool skipped = false;
@@ -49,25 +46,23 @@ struct TCaseResult
     size_t updates = 0;
     double medianUs = 0, meanUs = 0, p90Us = 0;  //!< thread CPU time per timed update
     double wallMedianUs = 0;  //!< wall-clock median (includes preemption)
-    double floorRatio = 0;     //!< median / floor median at the same M
-    double vsPsRatio = 0;      //!< median / PS-SLAM median at the same (M, N)
-    size_t stateBytes = 0;     //!< heap in use by the state after the timed updates
-    size_t peakBytes = 0;      //!< largest heap in use during the build and timing
-    double buildSeconds = 0;   //!< building the N-tag state
-    size_t tagsMapped = 0;     //!< landmarks the engine reports
+    double floorRatio = 0;    //!< median / floor median at the same M
+    double vsPsRatio = 0;     //!< median / PS-SLAM median at the same (M, N)
+    size_t stateBytes = 0;    //!< heap in use by the state after the timed updates
+    size_t peakBytes = 0;     //!< largest heap in use during the build and timing
+    double buildSeconds = 0;  //!< building the N-tag state
+    size_t tagsMapped = 0;    //!< landmarks the engine reports
 };
 
 /** The floor at one M: motion noise draw + one detection likelihood per particle. */
-struct TFloorResult
-{
+struct TFloorResult {
     size_t M = 0;
     double medianUs = 0, meanUs = 0;  //!< thread CPU time
     double wallMedianUs = 0;
 };
 
 /** The whole offline PS-SLAM run over a simulated floor. */
-struct TRealtimeResult
-{
+struct TRealtimeResult {
     std::string config;  //!< INI of the simulated run
     std::string method;
     size_t M = 0;
@@ -80,18 +75,16 @@ struct TRealtimeResult
 };
 
 /** A pass/fail target with the numbers that decide it. */
-struct TTarget
-{
+struct TTarget {
     std::string name;
     bool pass = false;
     bool measured = true;  //!< false: the cases it needs were not run
     std::string detail;
 };
 
-struct TBenchReport
-{
+struct TBenchReport {
     TBenchOptions options;
-    std::string host;  //!< CPU model and core count
+    std::string host;                      //!< CPU model and core count
     double loadBefore = 0, loadAfter = 0;  //!< 1-minute load average
     std::vector<TFloorResult> floor;
     std::vector<TCaseResult> sweepM, sweepN;
@@ -104,7 +97,8 @@ rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& m
                                     size_t M);
 
 /** Builds an N-tag state with the method itself, then times updates. */
-TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M, size_t N);
+TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
+                    size_t N);
 
 TFloorResult runFloor(const TBenchOptions& o, size_t M);
 

@@ -13,10 +13,8 @@
 #include <chrono>
 #include <numeric>
 
-namespace rfir::bench
-{
-TFloorResult runFloor(const TBenchOptions& o, size_t M)
-{
+namespace rfir::bench {
+TFloorResult runFloor(const TBenchOptions& o, size_t M) {
     mrpt::random::getRandomGenerator().randomize(uint32_t(o.seed));
     rfir::slam::TMotionOptions motion;
     const auto mv = rfir::slam::makeMovement(mrpt::poses::CPose2D(0.005, 0, 0), motion);
@@ -28,13 +26,11 @@ TFloorResult runFloor(const TBenchOptions& o, size_t M)
     std::vector<double> us, wall;
     const size_t reps = o.warmupUpdates + o.timedUpdates;
     double sink = 0;
-    for (size_t k = 0; k < reps; k++)
-    {
+    for (size_t k = 0; k < reps; k++) {
         const double w0 = wallSeconds(), c0 = threadCpuSeconds();
         mv.prepareFastDrawSingleSamples();
         mrpt::poses::CPose2D inc;
-        for (size_t i = 0; i < M; i++)
-        {
+        for (size_t i = 0; i < M; i++) {
             mv.fastDrawSingleSample(inc);
             poses[i] = poses[i] + inc;
             logW[i] += det.logLikelihood(poses[i].asTPose(), reader, tag);
@@ -51,7 +47,8 @@ TFloorResult runFloor(const TBenchOptions& o, size_t M)
     r.M = M;
     r.medianUs = us.empty() ? 0 : us[us.size() / 2];
     r.wallMedianUs = wall.empty() ? 0 : wall[wall.size() / 2];
-    r.meanUs = us.empty() ? 0 : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
+    r.meanUs =
+        us.empty() ? 0 : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
     if (sink == 12345.678) r.meanUs += 0;  // keeps the loop from being optimised away
     return r;
 }

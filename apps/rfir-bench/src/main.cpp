@@ -15,12 +15,10 @@
 #include <sstream>
 #include <thread>
 
-namespace
-{
+namespace {
 using namespace rfir::bench;
 
-std::string exeDir()
-{
+std::string exeDir() {
     char buf[4096];
     const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
     if (n <= 0) return ".";
@@ -28,68 +26,59 @@ std::string exeDir()
     return mrpt::system::extractFileDirectory(buf);
 }
 
-std::string defaultConfigDir()
-{
+std::string defaultConfigDir() {
     const std::string installed = exeDir() + "/../share/rfir/config_ini";
     if (mrpt::system::fileExists(installed + "/slam_ps.ini")) return installed;
     return std::string(RFIR_SOURCE_DIR) + "/config_ini";
 }
 
-std::string hostDescription()
-{
+std::string hostDescription() {
     std::ifstream f("/proc/cpuinfo");
     std::string line, model = "unknown CPU";
     while (std::getline(f, line))
-        if (line.rfind("model name", 0) == 0)
-        {
+        if (line.rfind("model name", 0) == 0) {
             model = line.substr(line.find(':') + 2);
             break;
         }
     return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
 }
 
-double loadAverage()
-{
+double loadAverage() {
     std::ifstream f("/proc/loadavg");
     double l = 0;
     f >> l;
     return l;
 }
 
-std::vector<size_t> parseList(const std::string& opt, const std::string& s)
-{
+std::vector<size_t> parseList(const std::string& opt, const std::string& s) {
     std::vector<size_t> v;
     std::stringstream ss(s);
     std::string item;
-    while (std::getline(ss, item, ','))
-    {
+    while (std::getline(ss, item, ',')) {
         size_t pos = 0;
         unsigned long long x = 0;
-        try
-        {
+        try {
             x = std::stoull(item, &pos);
-        }
-        catch (const std::exception&)
-        {
+        } catch (const std::exception&) {
             pos = 0;
         }
         if (pos == 0 || pos != item.size() || x == 0)
-            throw std::invalid_argument(opt + ": '" + item + "' is not a positive integer");
+            throw std::invalid_argument(opt + ": '" + item +
+                                        "' is not a positive integer");
         v.push_back(size_t(x));
     }
     if (v.empty()) throw std::invalid_argument(opt + ": empty list");
     return v;
 }
 
-std::vector<std::string> parseMethods(const std::string& s)
-{
+std::vector<std::string> parseMethods(const std::string& s) {
     std::vector<std::string> v;
     std::stringstream ss(s);
     std::string item;
-    while (std::getline(ss, item, ','))
-    {
+    while (std::getline(ss, item, ',')) {
         if (item != "ps" && item != "pf" && item != "fastslam")
-            throw std::invalid_argument("--methods: '" + item + "' is not ps, pf or fastslam");
+            throw std::invalid_argument("--methods: '" + item +
+                                        "' is not ps, pf or fastslam");
         v.push_back(item);
     }
     if (v.empty()) throw std::invalid_argument("--methods: empty list");
@@ -97,18 +86,18 @@ std::vector<std::string> parseMethods(const std::string& s)
 }
 
 /** Stores case i of a sweep, keeping the timing of the fastest round. */
-void keepFastest(std::vector<TCaseResult>& v, size_t i, const TCaseResult& c)
-{
+void keepFastest(std::vector<TCaseResult>& v, size_t i, const TCaseResult& c) {
     if (i >= v.size())
         v.push_back(c);
     else if (!c.skipped && c.medianUs < v[i].medianUs)
         v[i] = c;
 }
 
-void runAll(TBenchReport& r)
-{
+void runAll(TBenchReport& r) {
     const auto& o = r.options;
-    auto progress = [](const std::string& s) { std::cerr << "rfir-bench: " << s << std::endl; };
+    auto progress = [](const std::string& s) {
+        std::cerr << "rfir-bench: " << s << std::endl;
+    };
     for (size_t M : o.sweepM) r.floor.push_back(runFloor(o, M));
     bool fixedMInFloor = false;
     for (const auto& f : r.floor) fixedMInFloor |= f.M == o.fixedM;
@@ -116,22 +105,21 @@ void runAll(TBenchReport& r)
     // Several rounds, each case keeping its fastest round: a shared machine
     // slows whole stretches of a run (other jobs on the other core share the
     // caches and the memory bus), so the rounds are spread over time.
-    for (size_t round = 0; round < o.rounds; round++)
-    {
-        const std::string tag = " (round " + std::to_string(round + 1) + "/" +
-                                std::to_string(o.rounds) + ")";
+    for (size_t round = 0; round < o.rounds; round++) {
+        const std::string tag =
+            " (round " + std::to_string(round + 1) + "/" + std::to_string(o.rounds) + ")";
         size_t i = 0;
         for (size_t M : o.sweepM)
-            for (const auto& m : o.methods)
-            {
-                progress(m + " M=" + std::to_string(M) + " N=" + std::to_string(o.fixedN) + tag);
+            for (const auto& m : o.methods) {
+                progress(m + " M=" + std::to_string(M) +
+                         " N=" + std::to_string(o.fixedN) + tag);
                 keepFastest(r.sweepM, i++, runCase(o, m, M, o.fixedN));
             }
         i = 0;
         for (size_t N : o.sweepN)
-            for (const auto& m : o.methods)
-            {
-                progress(m + " M=" + std::to_string(o.fixedM) + " N=" + std::to_string(N) + tag);
+            for (const auto& m : o.methods) {
+                progress(m + " M=" + std::to_string(o.fixedM) +
+                         " N=" + std::to_string(N) + tag);
                 keepFastest(r.sweepN, i++, runCase(o, m, o.fixedM, N));
             }
     }
@@ -142,98 +130,105 @@ void runAll(TBenchReport& r)
     for (const auto& m : o.methods) runs.push_back({m, 500});
     r.realtime = runRealtime(o, runs);
 }
+
+/** --quick: a smoke run of seconds. */
+void setQuick(TBenchOptions& o) {
+    o.quick = true;
+    o.sweepM = {100, 500};
+    o.sweepN = {10, 1000};
+    o.timedUpdates = 20;
+    o.warmupUpdates = 4;
+    o.realtimeSeconds = 60;
+    o.rounds = 1;
+}
+
+struct TOutputs {
+    std::string json, markdown, plots;
+};
+
+/** The command line; false after --help or --version. */
+bool parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& out) {
+    TCLAP::CmdLine cmd(
+        "rfir-bench: time per SLAM update of PS-SLAM, PF-SLAM and FastSLAM against the "
+        "number of robot particles M and of mapped tags N, the state's memory, a floor "
+        "loop, and a whole 20-minute offline run against real time. Prints a table; "
+        "optionally writes JSON, Markdown and PNG plots. Single thread; fixed seeds.",
+        ' ', "0.1");
+    TCLAP::SwitchArg quick("", "quick", "smoke run: M 100,500; N 10,1000; 20 updates",
+                           cmd);
+    TCLAP::ValueArg<std::string> json("", "json", "write JSON", false, "", "FILE", cmd);
+    TCLAP::ValueArg<std::string> md("", "markdown", "write Markdown tables", false, "",
+                                    "FILE", cmd);
+    TCLAP::ValueArg<std::string> plots("", "plots", "write bench_*.png there", false, "",
+                                       "DIR", cmd);
+    TCLAP::ValueArg<std::string> ms("", "m", "robot particle counts", false, "", "LIST",
+                                    cmd);
+    TCLAP::ValueArg<std::string> ns("", "n", "mapped tag counts", false, "", "LIST", cmd);
+    TCLAP::ValueArg<size_t> updates("", "updates", "timed updates per case (200)", false,
+                                    200, "K", cmd);
+    TCLAP::ValueArg<size_t> rounds(
+        "", "rounds", "rounds; each case keeps its fastest (3)", false, 3, "R", cmd);
+    TCLAP::ValueArg<double> maxMN("", "max-fastslam-mn",
+                                  "skip FastSLAM above this M*N (5e7)", false, 5e7, "X",
+                                  cmd);
+    TCLAP::ValueArg<double> rtSec("", "realtime-seconds",
+                                  "robot time of the whole runs (1200)", false, 1200, "S",
+                                  cmd);
+    TCLAP::ValueArg<std::string> methods("", "methods", "subset of ps,pf,fastslam", false,
+                                         "", "LIST", cmd);
+    TCLAP::SwitchArg noRealtime("", "no-realtime", "skip the whole offline runs", cmd);
+    TCLAP::ValueArg<std::string> cfgDir("", "config-dir", "folder of the stock INIs",
+                                        false, "", "DIR", cmd);
+    TCLAP::ValueArg<uint64_t> seed("", "seed", "random seed (1)", false, 1, "N", cmd);
+    if (!cmd.parse(argc, argv)) return false;
+
+    if (quick.getValue()) setQuick(o);
+    if (rounds.isSet()) o.rounds = rounds.getValue();
+    if (o.rounds == 0) throw std::invalid_argument("--rounds must be > 0");
+    if (ms.isSet()) o.sweepM = parseList("--m", ms.getValue());
+    if (ns.isSet()) o.sweepN = parseList("--n", ns.getValue());
+    for (size_t N : o.sweepN)
+        if (N < 8) throw std::invalid_argument("--n: every N must be >= 8");
+    if (updates.isSet()) o.timedUpdates = updates.getValue();
+    if (o.timedUpdates == 0) throw std::invalid_argument("--updates must be > 0");
+    if (rtSec.isSet()) o.realtimeSeconds = rtSec.getValue();
+    if (!(o.realtimeSeconds > 0))
+        throw std::invalid_argument("--realtime-seconds must be > 0");
+    o.maxFastSlamMN = maxMN.getValue();
+    if (methods.isSet()) o.methods = parseMethods(methods.getValue());
+    o.realtime = !noRealtime.getValue();
+    o.seed = seed.getValue();
+    o.configDir = cfgDir.isSet() ? cfgDir.getValue() : defaultConfigDir();
+    out = {json.getValue(), md.getValue(), plots.getValue()};
+    if (!out.plots.empty() && !mrpt::system::directoryExists(out.plots))
+        throw std::invalid_argument("--plots: no folder '" + out.plots + "'");
+    return true;
+}
 }  // namespace
 
-int main(int argc, char** argv)
-{
-    try
-    {
-        TCLAP::CmdLine cmd(
-            "rfir-bench: time per SLAM update of PS-SLAM, PF-SLAM and FastSLAM against the "
-            "number of robot particles M and of mapped tags N, the state's memory, a floor "
-            "loop, and a whole 20-minute offline run against real time. Prints a table; "
-            "optionally writes JSON and PNG plots. Single thread; fixed seeds.",
-            ' ', "0.1");
-        TCLAP::SwitchArg quick("", "quick", "small fast smoke run (M 100,500; N 10,1000; 20 "
-                               "updates; a 60 s whole run)", cmd);
-        TCLAP::ValueArg<std::string> json("", "json", "write the results as JSON", false, "",
-                                          "FILE", cmd);
-        TCLAP::ValueArg<std::string> markdown("", "markdown", "write the results as Markdown "
-                                              "tables", false, "", "FILE", cmd);
-        TCLAP::ValueArg<std::string> plots("", "plots", "write bench_*.png plots there",
-                                           false, "", "DIR", cmd);
-        TCLAP::ValueArg<std::string> ms("", "m", "robot particle counts (default "
-                                        "100,200,500,1000,2000,5000)", false, "", "LIST", cmd);
-        TCLAP::ValueArg<std::string> ns("", "n", "mapped tag counts (default "
-                                        "10,100,1000,10000,100000)", false, "", "LIST", cmd);
-        TCLAP::ValueArg<size_t> updates("", "updates", "timed updates per case (default 200)",
-                                        false, 200, "K", cmd);
-        TCLAP::ValueArg<size_t> rounds("", "rounds", "rounds over every case; each keeps its "
-                                       "fastest (default 3, --quick 1)", false, 3, "R", cmd);
-        TCLAP::ValueArg<double> maxMN("", "max-fastslam-mn", "skip FastSLAM cases with M*N "
-                                      "above this (default 5e7)", false, 5e7, "X", cmd);
-        TCLAP::ValueArg<double> rtSec("", "realtime-seconds", "robot time of the whole run "
-                                      "(default 1200)", false, 1200, "S", cmd);
-        TCLAP::ValueArg<std::string> methods("", "methods", "methods to run (default "
-                                             "ps,pf,fastslam)", false, "", "LIST", cmd);
-        TCLAP::SwitchArg noRealtime("", "no-realtime", "skip the whole offline runs", cmd);
-        TCLAP::ValueArg<std::string> cfgDir("", "config-dir", "folder of the stock INIs",
-                                            false, "", "DIR", cmd);
-        TCLAP::ValueArg<uint64_t> seed("", "seed", "random seed", false, 1, "N", cmd);
-        if (!cmd.parse(argc, argv)) return 0;
-
+int main(int argc, char** argv) {
+    try {
         TBenchReport r;
-        auto& o = r.options;
-        if (quick.getValue())
-        {
-            o.quick = true;
-            o.sweepM = {100, 500};
-            o.sweepN = {10, 1000};
-            o.timedUpdates = 20;
-            o.warmupUpdates = 4;
-            o.realtimeSeconds = 60;
-            o.rounds = 1;
-        }
-        if (rounds.isSet()) o.rounds = rounds.getValue();
-        if (o.rounds == 0) throw std::invalid_argument("--rounds must be > 0");
-        if (ms.isSet()) o.sweepM = parseList("--m", ms.getValue());
-        if (ns.isSet()) o.sweepN = parseList("--n", ns.getValue());
-        for (size_t N : o.sweepN)
-            if (N < 8) throw std::invalid_argument("--n: every N must be >= 8");
-        if (updates.isSet()) o.timedUpdates = updates.getValue();
-        if (o.timedUpdates == 0) throw std::invalid_argument("--updates must be > 0");
-        if (rtSec.isSet()) o.realtimeSeconds = rtSec.getValue();
-        if (!(o.realtimeSeconds > 0)) throw std::invalid_argument("--realtime-seconds must be > 0");
-        o.maxFastSlamMN = maxMN.getValue();
-        if (methods.isSet()) o.methods = parseMethods(methods.getValue());
-        o.realtime = !noRealtime.getValue();
-        o.seed = seed.getValue();
-        o.configDir = cfgDir.isSet() ? cfgDir.getValue() : defaultConfigDir();
-        if (plots.isSet() && !mrpt::system::directoryExists(plots.getValue()))
-            throw std::invalid_argument("--plots: no folder '" + plots.getValue() + "'");
+        TOutputs out;
+        if (!parseArgs(argc, argv, r.options, out)) return 0;
         r.host = hostDescription();
-
         r.loadBefore = loadAverage();
         runAll(r);
         r.loadAfter = loadAverage();
         evaluate(r);
         printTable(r, std::cout);
-        if (json.isSet())
-            rfir::common::writeFileAtomically(json.getValue(),
-                                              [&](std::ostream& f) { f << toJson(r); });
-        if (markdown.isSet())
-            rfir::common::writeFileAtomically(markdown.getValue(),
-                                              [&](std::ostream& f) { f << toMarkdown(r); });
-        if (plots.isSet()) writePlots(r, plots.getValue());
+        using rfir::common::writeFileAtomically;
+        if (!out.json.empty())
+            writeFileAtomically(out.json, [&](std::ostream& f) { f << toJson(r); });
+        if (!out.markdown.empty())
+            writeFileAtomically(out.markdown,
+                                [&](std::ostream& f) { f << toMarkdown(r); });
+        if (!out.plots.empty()) writePlots(r, out.plots);
         return 0;
-    }
-    catch (const TCLAP::ArgException& e)
-    {
+    } catch (const TCLAP::ArgException& e) {
         std::cerr << "rfir-bench: " << e.error() << " (" << e.argId() << ")\n";
         return 2;
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         std::cerr << "rfir-bench: error: " << e.what() << "\n";
         return 1;
     }

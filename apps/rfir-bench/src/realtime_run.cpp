@@ -9,32 +9,28 @@
 #include <chrono>
 #include <string>
 
-namespace rfir::bench
-{
-namespace
-{
-std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out, size_t& dets)
-{
+namespace rfir::bench {
+namespace {
+std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out,
+                                             size_t& dets) {
     std::vector<rfir::slam::TSlamInput> v;
     std::optional<mrpt::poses::CPose2D> last;
     dets = 0;
-    for (const auto& s : out.steps)
-    {
+    for (const auto& s : out.steps) {
         rfir::slam::TSlamInput in;
         in.t = s.t;
-        if (s.odometry)
-        {
+        if (s.odometry) {
             if (last) in.odometryIncrement = *s.odometry - *last;
             last = s.odometry;
         }
-        for (const auto& o : s.obs)
-        {
-            if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
-            {
+        for (const auto& o : s.obs) {
+            if (auto r =
+                    std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o)) {
                 in.rfid = r;
                 dets += r->detectionCount();
             }
-            if (auto b = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
+            if (auto b =
+                    std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
                 in.rb = b;
         }
         v.push_back(std::move(in));
@@ -44,8 +40,7 @@ std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out, s
 }  // namespace
 
 std::vector<TRealtimeResult> runRealtime(
-    const TBenchOptions& o, const std::vector<std::pair<std::string, size_t>>& runs)
-{
+    const TBenchOptions& o, const std::vector<std::pair<std::string, size_t>>& runs) {
     using Clock = std::chrono::steady_clock;
     const std::string config = o.configDir + "/bench_floor_30x20.ini";
     char dur[64];
@@ -53,7 +48,8 @@ std::vector<TRealtimeResult> runRealtime(
     const auto simCfg = rfir::sim::loadSimConfig(config, {dur});
     auto t0 = Clock::now();
     const auto sim = rfir::sim::simulate(simCfg, o.seed);
-    const double simulateSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double simulateSeconds =
+        std::chrono::duration<double>(Clock::now() - t0).count();
     size_t dets = 0;
     const auto inputs = toInputs(sim, dets);
     size_t tags = 0;
@@ -63,8 +59,7 @@ std::vector<TRealtimeResult> runRealtime(
         sim.groundTruth.empty() ? mrpt::poses::CPose2D() : sim.groundTruth.front().pose;
 
     std::vector<TRealtimeResult> out;
-    for (const auto& [method, M] : runs)
-    {
+    for (const auto& [method, M] : runs) {
         TRealtimeResult r;
         r.config = config;
         r.method = method;

@@ -4,48 +4,46 @@
 #include <cstdio>
 #include <sstream>
 
-namespace rfir::bench
-{
-namespace
-{
-const char* label(const std::string& m)
-{
-    return m == "ps" ? "PS-SLAM" : m == "pf" ? "PF-SLAM" : m == "fastslam" ? "FastSLAM" : "?";
+namespace rfir::bench {
+namespace {
+const char* label(const std::string& m) {
+    return m == "ps"         ? "PS-SLAM"
+           : m == "pf"       ? "PF-SLAM"
+           : m == "fastslam" ? "FastSLAM"
+                             : "?";
 }
 
-std::string num(double v, int prec)
-{
+std::string num(double v, int prec) {
     char buf[64];
     std::snprintf(buf, sizeof(buf), "%.*f", prec, v);
     return buf;
 }
 
-void cases(std::ostringstream& o, const std::vector<TCaseResult>& v)
-{
-    o << "| method | M | N | median us | p90 us | wall us | x floor | x PS-SLAM | state MB "
-         "| peak MB | build s |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
+void cases(std::ostringstream& o, const std::vector<TCaseResult>& v) {
+    o << "| method | M | N | median us | p90 us | wall us | x floor | x PS-SLAM | state "
+         "MB "
+         "| peak MB | build s |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
+         "| ---: "
          "| ---: | ---: |\n";
-    for (const auto& c : v)
-    {
+    for (const auto& c : v) {
         o << "| " << label(c.method) << " | " << c.M << " | " << c.N << " | ";
-        if (c.skipped)
-        {
+        if (c.skipped) {
             o << "skipped: " << c.skipReason << " | | | | | | | |\n";
             continue;
         }
-        o << num(c.medianUs, 1) << " | " << num(c.p90Us, 1) << " | " << num(c.wallMedianUs, 1)
-          << " | " << num(c.floorRatio, 2)
-          << " | " << num(c.vsPsRatio, 2) << " | " << num(c.stateBytes / 1e6, 2) << " | "
+        o << num(c.medianUs, 1) << " | " << num(c.p90Us, 1) << " | "
+          << num(c.wallMedianUs, 1) << " | " << num(c.floorRatio, 2) << " | "
+          << num(c.vsPsRatio, 2) << " | " << num(c.stateBytes / 1e6, 2) << " | "
           << num(c.peakBytes / 1e6, 2) << " | " << num(c.buildSeconds, 2) << " |\n";
     }
     o << "\n";
 }
 }  // namespace
 
-std::string toMarkdown(const TBenchReport& r)
-{
+std::string toMarkdown(const TBenchReport& r) {
     std::ostringstream o;
-    o << "Measured on " << r.host << ", shared with other jobs while it ran (1-minute load "
+    o << "Measured on " << r.host
+      << ", shared with other jobs while it ran (1-minute load "
       << "average " << num(r.loadBefore, 1) << " at the start, " << num(r.loadAfter, 1)
       << " at the end); one thread; seed " << r.options.seed << "; times are thread CPU "
       << "time, median of " << r.options.timedUpdates << " timed updates per case, the "
@@ -54,22 +52,24 @@ std::string toMarkdown(const TBenchReport& r)
     o << "**Floor** (motion noise draw + one detection likelihood per particle)\n\n"
       << "| M | median us | mean us | wall us |\n| ---: | ---: | ---: | ---: |\n";
     for (const auto& f : r.floor)
-        o << "| " << f.M << " | " << num(f.medianUs, 1) << " | " << num(f.meanUs, 1) << " | "
-          << num(f.wallMedianUs, 1) << " |\n";
-    o << "\n**Against the robot particles M** (N = " << r.options.fixedN << " tags mapped)\n\n";
+        o << "| " << f.M << " | " << num(f.medianUs, 1) << " | " << num(f.meanUs, 1)
+          << " | " << num(f.wallMedianUs, 1) << " |\n";
+    o << "\n**Against the robot particles M** (N = " << r.options.fixedN
+      << " tags mapped)\n\n";
     cases(o, r.sweepM);
-    o << "**Against the mapped tags N** (M = " << r.options.fixedM << " robot particles)\n\n";
+    o << "**Against the mapped tags N** (M = " << r.options.fixedM
+      << " robot particles)\n\n";
     cases(o, r.sweepN);
     o << "**Whole offline runs** (`config_ini/bench_floor_30x20.ini`)\n\n"
       << "| method | M | robot time s | steps | tags in world | tags mapped | reads | "
-         "SLAM CPU s | SLAM wall s | x real time |\n| --- | ---: | ---: | ---: | ---: | ---: | "
+         "SLAM CPU s | SLAM wall s | x real time |\n| --- | ---: | ---: | ---: | ---: | "
+         "---: | "
          "---: | ---: | ---: | ---: |\n";
     for (const auto& x : r.realtime)
-        o << "| " << label(x.method) << " | " << x.M << " | " << num(x.simSeconds, 0) << " | "
-          << x.steps << " | " << x.tagsInWorld << " | " << x.tagsMapped << " | "
+        o << "| " << label(x.method) << " | " << x.M << " | " << num(x.simSeconds, 0)
+          << " | " << x.steps << " | " << x.tagsInWorld << " | " << x.tagsMapped << " | "
           << x.detections << " | " << num(x.slamSeconds, 2) << " | "
-          << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0)
-          << " |\n";
+          << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " |\n";
     o << "\n**Targets**\n\n| target | result | numbers |\n| --- | --- | --- |\n";
     for (const auto& t : r.targets)
         o << "| " << t.name << " | "

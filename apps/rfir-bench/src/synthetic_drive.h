@@ -19,11 +19,9 @@
 #include <cstddef>
 #include <vector>
 
-namespace rfir::bench
-{
-class CSyntheticDrive
-{
-public:
+namespace rfir::bench {
+class CSyntheticDrive {
+  public:
     explicit CSyntheticDrive(size_t N, size_t tagsPerStep = 64);
 
     size_t populationSteps() const { return chunkStart_.size(); }
@@ -33,7 +31,7 @@ public:
     /** Detections in a timed update. */
     static constexpr size_t kTimedDetections = 2;
 
-private:
+  private:
     rfir::obs::CObservationRFIDReaders::Ptr observation(
         const std::vector<std::pair<size_t, size_t>>& readerTag) const;
 

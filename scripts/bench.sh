@@ -3,7 +3,7 @@
 # docs/img/bench_time_vs_M.png, bench_time_vs_N.png, bench_memory_vs_N.png,
 # the results section of docs/benchmark.md (between
 # the RESULTS markers). Builds rfir-bench first if needed. The full run takes
-# several minutes and needs about 8 GB of free memory (the N = 100,000 states).
+# about 7 minutes and needs about 6 GB of free memory (the N = 100,000 states).
 #
 #   bash scripts/bench.sh                 # full run, updates docs/
 #   bash scripts/bench.sh --quick         # smoke run (seconds), docs untouched

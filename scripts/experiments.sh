@@ -4,7 +4,7 @@
 # several seeds per row; writes docs/results.md, docs/results.json and
 # docs/img/exp_*.png. Builds rfir-experiments first if needed.
 #
-#   bash scripts/experiments.sh                      # every row, 5 seeds
+#   bash scripts/experiments.sh                      # every row, 8 seeds
 #   bash scripts/experiments.sh --quick --out /tmp/x # tiny runs (a minute)
 #   bash scripts/experiments.sh --rows t41,t42 --seeds 3 --out /tmp/y
 #   bash scripts/experiments.sh --list               # the row ids

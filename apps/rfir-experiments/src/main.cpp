@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
                                           false, "all", "IDS", cmd);
         TCLAP::SwitchArg list("", "list", "list the rows and exit", cmd);
         TCLAP::ValueArg<unsigned> seeds(
-            "", "seeds", "seeds per row (default 5, --quick 1)", false, 0, "N", cmd);
+            "", "seeds", "seeds per row (default 8, --quick 1)", false, 0, "N", cmd);
         TCLAP::ValueArg<uint64_t> firstSeed(
             "", "first-seed", "seeds are S, S+1, ... (default 1)", false, 1, "S", cmd);
         TCLAP::SwitchArg quick("", "quick",
@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (out.getValue().empty()) throw std::invalid_argument("--out DIR is required");
-        const unsigned n = seeds.isSet() ? seeds.getValue() : quick.getValue() ? 1 : 5;
+        const unsigned n = seeds.isSet() ? seeds.getValue() : quick.getValue() ? 1 : 8;
         if (n == 0) throw std::invalid_argument("--seeds must be at least 1");
         TMeta meta;
         meta.quick = quick.getValue();

@@ -47,48 +47,47 @@ TStat seedStat(const TRowResults& r, const std::string& m, const TGetter& g) {
     return statOf(perSeed(r, 0, m, g));
 }
 
-/** The ordering of methods by `get` (ours) against the seeds' ordering. A
- * pair whose means differ by less than the standard error of the difference
- * (over seeds) is a tie ("≈"): our seeds do not resolve it. */
+/** Paired over seeds (every method runs on the same data): true when the
+ * mean of the per-seed differences a - b is within two standard errors of 0,
+ * i.e. our seeds do not resolve the order of a and b. */
+bool pairedTie(const TRowResults& r, const std::string& a, const std::string& b,
+               const TGetter& get) {
+    const auto va = perSeed(r, 0, a, get), vb = perSeed(r, 0, b, get);
+    std::vector<double> d;
+    for (size_t i = 0; i < std::min(va.size(), vb.size()); i++)
+        d.push_back(va[i] - vb[i]);
+    const TStat s = statOf(d);
+    if (s.n < 2) return false;
+    return std::abs(s.mean) < 2 * s.sd / std::sqrt(double(s.n));
+}
+
+/** The ordering of methods by `get` (ours) against the seeds' ordering;
+ * "≈" joins neighbours whose order our seeds do not resolve (pairedTie). */
 std::string orderingCheck(const TRowResults& r, const char* what,
                           double TSeedNumbers::*seedField, const TGetter& get) {
-    struct M {
-        double v;
-        std::string name;
-        TStat s;
-    };
-    std::vector<M> seeds, ours;
+    std::vector<std::pair<double, std::string>> seeds, ours;
     for (const auto& s : r.row.seedNumbers)
         if (std::isfinite(s.*seedField)) {
-            seeds.push_back({s.*seedField, s.label, {}});
-            const TStat st = seedStat(r, s.label, get);
-            ours.push_back({st.mean, s.label, st});
+            seeds.push_back({s.*seedField, s.label});
+            ours.push_back({seedStat(r, s.label, get).mean, s.label});
         }
     if (seeds.size() < 2) return "";
-    auto byV = [](const M& a, const M& b) { return a.v < b.v; };
-    std::sort(seeds.begin(), seeds.end(), byV);
-    std::sort(ours.begin(), ours.end(), byV);
-    auto se = [](const TStat& s) { return s.n > 1 ? s.sd * s.sd / double(s.n) : 0.0; };
-    auto tie = [&](const M& a, const M& b) {
-        return std::abs(a.v - b.v) < std::sqrt(se(a.s) + se(b.s));
-    };
+    std::sort(seeds.begin(), seeds.end());
+    std::sort(ours.begin(), ours.end());
     std::string cs, co;
-    for (size_t i = 0; i < seeds.size(); i++) cs += (i ? " < " : "") + seeds[i].name;
+    for (size_t i = 0; i < seeds.size(); i++) cs += (i ? " < " : "") + seeds[i].second;
     for (size_t i = 0; i < ours.size(); i++)
-        co += (i ? (tie(ours[i - 1], ours[i]) ? " ≈ " : " < ") : "") + ours[i].name;
-    // Every pair the seeds order: same order, tie, or reversed beyond the spread.
+        co += (i ? (pairedTie(r, ours[i - 1].second, ours[i].second, get) ? " ≈ " : " < ")
+                 : "") +
+              ours[i].second;
     bool reversed = false, tied = false;
     for (size_t i = 0; i < seeds.size(); i++)
         for (size_t j = i + 1; j < seeds.size(); j++) {
-            const auto& a = *std::find_if(ours.begin(), ours.end(), [&](const M& m) {
-                return m.name == seeds[i].name;
-            });
-            const auto& b = *std::find_if(ours.begin(), ours.end(), [&](const M& m) {
-                return m.name == seeds[j].name;
-            });
-            if (tie(a, b))
+            const auto& a = seeds[i].second;
+            const auto& b = seeds[j].second;
+            if (pairedTie(r, a, b, get))
                 tied = true;
-            else if (a.v > b.v)
+            else if (seedStat(r, a, get).mean > seedStat(r, b, get).mean)
                 reversed = true;
         }
     const char* verdict = reversed ? " (**different ordering**)"
@@ -194,7 +193,10 @@ std::string header(const TMeta& meta) {
          "|dx|, |dy|, |dθ| and the distance, averaged over a row's sub-runs (e.g. the "
          "five "
          "predefined paths), then **mean ± standard deviation over the seeds**; *max* is "
-         "the largest error over all seeds and sub-runs. *Mapped / passed over*: tags "
+         "the largest error over all seeds and sub-runs. Orderings are judged paired "
+         "over seeds (the methods share each seed's data): `a < b` when the mean "
+         "per-seed difference is more than two standard errors from zero, else `a ≈ b`. "
+         "*Mapped / passed over*: tags "
          "estimated / tags that came inside a reader's area (landmarks in the sensor's "
          "view).\n\n";
     return o.str();

@@ -243,3 +243,82 @@ TEST(TagMap, RangeBearingLandmarks) {
     EXPECT_GT(m.computeObservationLikelihood(*o, pose3(robot)),
               m.computeObservationLikelihood(*o, pose3({1.03, 0.0, 0.3})));
 }
+
+// robot_likelihood = tag_particles: the detection likelihood averaged over K
+// evenly spaced tag particles (log of the mean), computed here by hand.
+TEST(TagMap, RobotLikelihoodOverTagParticles) {
+    CRFIDTagParticleMap m;
+    m.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagParticles;
+    m.likelihoodOptions.robotLikelihoodK = 4;
+    const auto o = oneRead("T");
+    m.insertObservation(*o, pose3({0, 0, 0}));
+    const auto* t = m.getTag("T");
+    ASSERT_EQ(t->sample.size(), 4u);
+    for (size_t k = 0; k < 4; k++)  // particles 12, 37, 62, 87 of 100
+        EXPECT_EQ(t->sample[k].x, t->particles()[(2 * k + 1) * 100 / 8].x);
+    const mrpt::math::TPose2D robot{0.04, -0.02, 0.1};
+    const rfir::models::DetectionLikelihood det;
+    const rfir::models::ReaderArea r{0.1, 0.0, 0.03, 0.03};
+    double s = 0;
+    for (const auto& p : t->sample) s += std::exp(det.logLikelihood(robot, r, p));
+    EXPECT_NEAR(m.computeObservationLikelihood(*o, pose3(robot)), std::log(s / 4), 1e-12);
+    // tag_mean: against the mean only.
+    m.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagMean;
+    EXPECT_EQ(m.computeObservationLikelihood(*o, pose3(robot)),
+              det.logLikelihood(robot, r, t->estimate.mean));
+}
+
+// tag_robot_pose = samples_init: a new tag's particles are placed by robot
+// poses drawn from the robot set, so they cover both candidate robot poses.
+TEST(TagMap, NewTagFromRobotSamples) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.tagRobotPose = rfir::maps::TTagRobotPose::SamplesInit;
+    m.setRobotSamples({{-0.2, 0, 0}, {0.2, 0, 0}});
+    m.insertObservation(*oneRead("T"), pose3({0, 0, 0}));
+    size_t left = 0, right = 0;
+    for (const auto& p : m.getTag("T")->particles()) {
+        const bool l = std::abs(p.x - (-0.1)) <= 0.03 + 1e-9,
+                   r = std::abs(p.x - 0.3) <= 0.03 + 1e-9;
+        EXPECT_TRUE(l || r) << p.x;
+        left += l;
+        right += r;
+    }
+    EXPECT_GT(left, 20u);
+    EXPECT_GT(right, 20u);
+}
+
+// tag_robot_pose = samples_visit: the first visit's reads are placed by the
+// robot mean; the estimate is spread by the drawn robot poses, and the spread
+// becomes the estimator's state when the second visit starts. Serialized
+// copies keep it.
+TEST(TagMap, FirstVisitSpreadByRobotSamples) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.tagRobotPose = rfir::maps::TTagRobotPose::SamplesVisit;
+    m.setRobotSamples({{-0.2, 0, 0}, {0.2, 0, 0}});
+    const auto o = oneRead("T");
+    m.insertObservation(*o, pose3({0, 0, 0}));
+    m.insertObservation(*o, pose3({0, 0, 0}));  // same visit: placed by the mean
+    const auto* t = m.getTag("T");
+    ASSERT_EQ(t->spreadPoses.size(), 100u);
+    for (const auto& p : t->particles()) EXPECT_LE(std::abs(p.x - 0.1), 0.03 + 1e-9);
+    EXPECT_GT(t->estimate.cov(0, 0), 0.15 * 0.15);  // about 0.2^2
+    CRFIDTagParticleMap copy;
+    {
+        mrpt::io::CMemoryStream buf;
+        mrpt::serialization::archiveFrom(buf) << m;
+        buf.Seek(0);
+        mrpt::serialization::archiveFrom(buf) >> copy;
+    }
+    EXPECT_EQ(copy.getTag("T")->spreadPoses.size(), 100u);
+    EXPECT_EQ(copy.getTag("T")->estimate.cov(0, 0), t->estimate.cov(0, 0));
+    const double var = t->estimate.cov(0, 0);
+    m.insertObservation(*oneRead(""), pose3({1, 0, 0}));
+    EXPECT_EQ(t->estimate.cov(0, 0), var);  // reads of other tags change nothing
+    // The second visit commits the spread: the states themselves move.
+    m.insertObservation(*o, pose3({0.2, 0, 0}));
+    EXPECT_TRUE(t->spreadPoses.empty());
+    EXPECT_EQ(t->visits, 2u);
+    size_t moved = 0;
+    for (const auto& p : t->particles()) moved += std::abs(p.x - 0.1) > 0.03 + 1e-9;
+    EXPECT_GT(moved, 20u);
+}

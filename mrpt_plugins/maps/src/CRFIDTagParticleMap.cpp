@@ -54,11 +54,100 @@ struct CRFIDTagParticleMapImpl {
         return rfir::models::TagFixedLagSmoother(p);
     }
 
+    /** Refreshes the cached estimate and, for robot_likelihood = tag_particles,
+     * the K evenly spaced particles of the set the estimate is built from (PF:
+     * the resampled set; smoother: the smoothed set). */
+    static void refresh(const Map& m, Entry& e) {
+        e.estimate = std::visit([](auto& est) { return est.estimate(); }, e.estimator);
+        const bool spread = !e.spreadPoses.empty();
+        if (!spread &&
+            m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles)
+            return;
+        std::vector<mrpt::math::TPoint2D> pts;
+        if (const auto* ps = std::get_if<rfir::models::TagFixedLagSmoother>(&e.estimator))
+            pts = ps->smoothedParticles();
+        else
+            pts = e.particles();
+        if (spread) {
+            for (size_t j = 0; j < pts.size(); j++) pts[j] = spreadPoint(e, j, pts[j]);
+            e.estimate = rfir::models::weightedEstimate(pts, {});
+        }
+        if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles) return;
+        const size_t n = pts.size(),
+                     K = std::min(n, m.likelihoodOptions.robotLikelihoodK);
+        e.sample.resize(K);
+        for (size_t k = 0; k < K; k++) e.sample[k] = pts[(2 * k + 1) * n / (2 * K)];
+    }
+
+    /** SamplesVisit: particle j, placed by the robot mean C, as if the robot
+     * had been at the drawn pose S_j: S_j + R(S_j) R(C)^T (p - C). */
+    static mrpt::math::TPoint2D spreadPoint(const Entry& e, size_t j,
+                                            const mrpt::math::TPoint2D& p) {
+        const auto& C = e.spreadOrigin;
+        const auto& S = e.spreadPoses[j % e.spreadPoses.size()];
+        const double c = std::cos(C.phi), s = std::sin(C.phi);
+        const double lx = c * (p.x - C.x) + s * (p.y - C.y),
+                     ly = -s * (p.x - C.x) + c * (p.y - C.y);
+        const double cs = std::cos(S.phi), ss = std::sin(S.phi);
+        return {S.x + cs * lx - ss * ly, S.y + ss * lx + cs * ly};
+    }
+
+    /** SamplesVisit: the first visit is over; move the estimator's states for
+     * good (the later reads are placed by a robot that has moved on). */
+    static void commitSpread(const Map& m, Entry& e) {
+        if (e.spreadPoses.empty()) return;
+        const auto f = [&](size_t j, const mrpt::math::TPoint2D& p) {
+            return spreadPoint(e, j, p);
+        };
+        std::visit([&](auto& est) { est.moveStates(f); }, e.estimator);
+        e.spreadPoses.clear();
+        e.spreadPoses.shrink_to_fit();
+        refresh(m, e);
+    }
+
     /** Re-weigh/resample an entry's estimator with a likelihood, refresh cache. */
-    static void update(Entry& e, const rfir::models::PointLogLikelihood& f,
+    static void update(const Map& m, Entry& e, const rfir::models::PointLogLikelihood& f,
                        mrpt::random::CRandomGenerator& rng) {
         std::visit([&](auto& est) { est.update(f, rng); }, e.estimator);
-        e.estimate = std::visit([](auto& est) { return est.estimate(); }, e.estimator);
+        refresh(m, e);
+    }
+
+    /** The robot pose that places the reader for one tag particle: the insert
+     * pose, or (tag_robot_pose = samples) a pose drawn from the robot set. */
+    static const mrpt::math::TPose2D& robotFor(const Map& m, bool drawn,
+                                               const mrpt::math::TPose2D& robot,
+                                               mrpt::random::CRandomGenerator& rng) {
+        const auto& s = m.m_robotSamples;
+        if (!drawn || s.empty()) return robot;
+        return s[rng.drawUniform32bit() % s.size()];
+    }
+
+    /** A new tag's particles: uniform over the reader's rectangle placed by the
+     * robot mean (the seeds) or, per particle, by a drawn robot pose. */
+    static void initTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
+                        const ReaderArea& r, mrpt::random::CRandomGenerator& rng) {
+        const auto mode = m.insertionOptions.tagRobotPose;
+        if (mode == TTagRobotPose::Mean || mode == TTagRobotPose::SamplesVisit ||
+            m.m_robotSamples.empty()) {
+            std::visit([&](auto& est) { est.initUniform(robot, r, rng); }, e.estimator);
+            if (mode == TTagRobotPose::SamplesVisit && !m.m_robotSamples.empty()) {
+                e.spreadOrigin = robot;
+                e.spreadPoses.resize(m.insertionOptions.numParticles);
+                for (auto& q : e.spreadPoses) q = robotFor(m, true, robot, rng);
+            }
+        } else {
+            std::vector<mrpt::math::TPoint2D> pts(m.insertionOptions.numParticles);
+            for (auto& p : pts) {
+                const auto& pose = robotFor(m, true, robot, rng);
+                ReaderArea off = r;
+                off.x = r.x + rng.drawUniform(-r.halfX, r.halfX);
+                off.y = r.y + rng.drawUniform(-r.halfY, r.halfY);
+                p = rfir::models::readerCentreInWorld(pose, off);
+            }
+            std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
+                       e.estimator);
+        }
+        refresh(m, e);
     }
 
     /** Would a read of `e` in the next observation of a sensor whose track is
@@ -84,24 +173,55 @@ struct CRFIDTagParticleMapImpl {
     static void markRead(const Map& m, Entry& e, const Map::TSensorTrack& before,
                          const Map::TSensorTrack& now, size_t reads) {
         if (newVisit(m, e, before)) {
+            if (e.visits >= 1) commitSpread(m, e);
             e.visits++;
             e.visitStartEstimate = e.estimate;
+            e.visitStartSample = e.sample;
         }
         e.lastReadStep = now.steps;
         e.lastReadTravel = now.travel;
         e.detections += reads;
     }
 
+    enum class Which { None, Current, VisitStart };
     /** Which estimate (if any) weighs the robot for a read of `e`, per policy. */
+    static Which whichForRobot(const Map& m, const Entry& e, const Map::TSensorTrack& t) {
+        const auto& lo = m.likelihoodOptions;
+        if (lo.robotUpdate == TRobotUpdatePolicy::Literal) return Which::Current;
+        // Called before this observation is inserted.
+        if (newVisit(m, e, t)) return Which::Current;  // the estimate before this visit
+        if (lo.robotUpdate == TRobotUpdatePolicy::RevisitAll && e.visits >= 2)
+            return Which::VisitStart;
+        return Which::None;  // consecutive re-read (or first pass): nothing new
+    }
     static const PointEstimate* estimateForRobot(const Map& m, const Entry& e,
                                                  const Map::TSensorTrack& t) {
-        const auto& lo = m.likelihoodOptions;
-        if (lo.robotUpdate == TRobotUpdatePolicy::Literal) return &e.estimate;
-        // Called before this observation is inserted.
-        if (newVisit(m, e, t)) return &e.estimate;  // the estimate before this visit
-        if (lo.robotUpdate == TRobotUpdatePolicy::RevisitAll && e.visits >= 2)
-            return &e.visitStartEstimate;
-        return nullptr;  // consecutive re-read (or first pass): nothing new
+        const Which w = whichForRobot(m, e, t);
+        return w == Which::None      ? nullptr
+               : w == Which::Current ? &e.estimate
+                                     : &e.visitStartEstimate;
+    }
+
+    /** Robot log-likelihood of one read of `e` by reader `r`: against the tag
+     * mean, or (tag_particles) log of the mean likelihood over the K stored
+     * tag particles, i.e. the detection likelihood marginalised over the tag's
+     * uncertainty (O(K)). */
+    static double robotReadLogLik(const Map& m, const Entry& e, Which w,
+                                  const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                                  const rfir::models::DetectionLikelihood& det) {
+        const auto& smp = w == Which::Current ? e.sample : e.visitStartSample;
+        if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles ||
+            smp.empty()) {
+            const auto& est = w == Which::Current ? e.estimate : e.visitStartEstimate;
+            return det.logLikelihood(robot, r, est.mean);
+        }
+        double ll[64], best = -1e300;
+        const size_t K = std::min<size_t>(smp.size(), 64);
+        for (size_t k = 0; k < K; k++)
+            best = std::max(best, ll[k] = det.logLikelihood(robot, r, smp[k]));
+        double s = 0;
+        for (size_t k = 0; k < K; k++) s += std::exp(ll[k] - best);
+        return best + std::log(s / double(K));
     }
 
     static ReaderArea area(const rfir::obs::TRFIDReader& r) {
@@ -135,10 +255,7 @@ struct CRFIDTagParticleMapImpl {
                 Entry e;
                 e.id = id;
                 e.estimator = makeEstimator(m.insertionOptions);
-                std::visit([&](auto& est) { est.initUniform(robot, areas[0], rng); },
-                           e.estimator);
-                e.estimate =
-                    std::visit([](auto& est) { return est.estimate(); }, e.estimator);
+                initTag(m, e, robot, areas[0], rng);
                 it = m.m_tags.emplace(id, std::move(e)).first;
                 first = 1;
             }
@@ -146,11 +263,14 @@ struct CRFIDTagParticleMapImpl {
             markRead(m, e, before, m.m_track[0], areas.size());
             if (first < areas.size()) {
                 const std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
+                const bool drawn =
+                    m.insertionOptions.tagRobotPose == TTagRobotPose::Samples;
                 update(
-                    e,
+                    m, e,
                     [&](const mrpt::math::TPoint2D& p) {
+                        const auto& pose = robotFor(m, drawn, robot, rng);
                         double s = 0;
-                        for (const auto& a : rest) s += det.logLikelihood(robot, a, p);
+                        for (const auto& a : rest) s += det.logLikelihood(pose, a, p);
                         return s;
                     },
                     rng);
@@ -187,14 +307,13 @@ struct CRFIDTagParticleMapImpl {
                     sensor, z.range, z.yaw, rb, m.insertionOptions.numParticles, rng);
                 std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
                            e.estimator);
-                e.estimate =
-                    std::visit([](auto& est) { return est.estimate(); }, e.estimator);
+                refresh(m, e);
                 markRead(m, e, before, m.m_track[1], 1);
                 m.m_landmarks.emplace(id, std::move(e));
             } else {
                 markRead(m, it->second, before, m.m_track[1], 1);
                 update(
-                    it->second,
+                    m, it->second,
                     [&](const mrpt::math::TPoint2D& p) {
                         return rfir::models::rangeBearingLogLikelihood(sensor, p, z.range,
                                                                        z.yaw, rb);
@@ -333,10 +452,10 @@ double CRFIDTagParticleMap::internal_computeObservationLikelihood(
             for (const auto& id : rd.tags) {
                 const auto it = m_tags.find(id);
                 if (it == m_tags.end()) continue;
-                const PointEstimate* est =
-                    Impl::estimateForRobot(*this, it->second, m_track[0]);
-                if (est)
-                    sum += det.logLikelihood(robot, Impl::area(rd.reader), est->mean);
+                const auto w = Impl::whichForRobot(*this, it->second, m_track[0]);
+                if (w != Impl::Which::None)
+                    sum += Impl::robotReadLogLik(*this, it->second, w, robot,
+                                                 Impl::area(rd.reader), det);
             }
     } else if (const auto* b =
                    dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs)) {

@@ -112,6 +112,11 @@ void writeEntries(CArchive& a,
         writeEst(a, e->visitStartEstimate);
         writeEst(a, e->estimate);
         writeEstimator(a, e->estimator);
+        writePts(a, e->sample);  // v2
+        writePts(a, e->visitStartSample);
+        a.WriteAs<uint64_t>(e->spreadPoses.size());
+        for (const auto& q : e->spreadPoses) a << q.x << q.y << q.phi;
+        a << e->spreadOrigin.x << e->spreadOrigin.y << e->spreadOrigin.phi;
     }
 }
 
@@ -130,6 +135,16 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
         const auto est = readEst(a);
         e.estimator = readEstimator(a, est);
         e.estimate = std::visit([](auto& x) { return x.estimate(); }, e.estimator);
+        if (version >= 2) {
+            e.sample = readPts(a);
+            e.visitStartSample = readPts(a);
+            const auto n = a.ReadAs<uint64_t>();
+            if (n > (1ULL << 32))
+                throw std::runtime_error("CRFIDTagParticleMap: corrupt size");
+            e.spreadPoses.resize(n);
+            for (auto& q : e.spreadPoses) a >> q.x >> q.y >> q.phi;
+            a >> e.spreadOrigin.x >> e.spreadOrigin.y >> e.spreadOrigin.phi;
+        }
         const std::string id = e.id;
         t.emplace(id, std::move(e));
     }
@@ -137,7 +152,7 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
 }  // namespace
 
 uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
-    return 1;
+    return 2;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
@@ -155,7 +170,10 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << lo.rangeBearing.sigmaRange << lo.rangeBearing.sigmaBearing;
     out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.robotUpdate));
     out.WriteAs<uint64_t>(lo.revisitMinGap);
-    out << lo.rbUseLandmarkCov << lo.revisitMinTravel;  // v1: travel
+    out << lo.rbUseLandmarkCov << lo.revisitMinTravel;            // v1: travel
+    out.WriteAs<uint8_t>(static_cast<uint8_t>(io.tagRobotPose));  // v2
+    out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.robotLikelihood));
+    out.WriteAs<uint64_t>(lo.robotLikelihoodK);
     out << m_landmarkNames;
     out.WriteAs<uint64_t>(m_track[0].steps);
     out.WriteAs<uint64_t>(m_track[1].steps);
@@ -168,7 +186,8 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
 void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
     switch (version) {
         case 0:
-        case 1: {
+        case 1:
+        case 2: {
             in >> genericMapParams;
             auto& io = insertionOptions;
             io.estimator = static_cast<TTagEstimatorKind>(in.ReadAs<uint8_t>());
@@ -188,6 +207,14 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
             in >> lo.rbUseLandmarkCov;
             lo.revisitMinTravel = 0;
             if (version >= 1) in >> lo.revisitMinTravel;
+            io.tagRobotPose = TTagRobotPose::Mean;
+            lo.robotLikelihood = TRobotLikelihood::TagMean;
+            lo.robotLikelihoodK = 12;
+            if (version >= 2) {
+                io.tagRobotPose = static_cast<TTagRobotPose>(in.ReadAs<uint8_t>());
+                lo.robotLikelihood = static_cast<TRobotLikelihood>(in.ReadAs<uint8_t>());
+                lo.robotLikelihoodK = in.ReadAs<uint64_t>();
+            }
             in >> m_landmarkNames;
             m_track[0] = m_track[1] = TSensorTrack();
             m_track[0].steps = in.ReadAs<uint64_t>();

@@ -18,12 +18,16 @@ const std::vector<std::string> kResamplingNames = {"systematic", "stratified",
                                                    "multinomial"};
 const std::vector<std::string> kModelNames = {"step", "gaussian"};
 const std::vector<std::string> kPolicyNames = {"literal", "revisit", "revisit_all"};
+const std::vector<std::string> kRobotPoseNames = {"mean", "samples_init", "samples",
+                                                  "samples_visit"};
+const std::vector<std::string> kRobotLikNames = {"tag_mean", "tag_particles"};
 }  // namespace
 
 const std::vector<std::string>& CRFIDTagParticleMap::TInsertionOptions::allowedKeys() {
     static const std::vector<std::string> k = {
         "estimator",        "num_particles", "lag",        "smoother_step_sigma",
-        "roughening_sigma", "ess_threshold", "resampling", "seed"};
+        "roughening_sigma", "ess_threshold", "resampling", "seed",
+        "tag_robot_pose"};
     return k;
 }
 
@@ -48,6 +52,8 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
     if (sd != static_cast<double>(static_cast<uint64_t>(sd)))
         throw std::runtime_error("[" + s + "] seed: must be a non-negative integer");
     seed = static_cast<uint64_t>(sd);
+    tagRobotPose = static_cast<TTagRobotPose>(rfir::readIniEnum(
+        c, s, "tag_robot_pose", kRobotPoseNames, static_cast<size_t>(tagRobotPose)));
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
@@ -59,7 +65,9 @@ void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) c
       << "roughening_sigma    = " << rougheningSigma << "\n"
       << "ess_threshold       = " << essThreshold << "\n"
       << "resampling          = " << rfir::models::toString(resampling) << "\n"
-      << "seed                = " << seed << "\n";
+      << "seed                = " << seed << "\n"
+      << "tag_robot_pose      = " << kRobotPoseNames[static_cast<size_t>(tagRobotPose)]
+      << "\n";
 }
 
 const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowedKeys() {
@@ -68,7 +76,8 @@ const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowed
         "gaussian_sigma_scale", "rb_sigma_range",
         "rb_sigma_bearing_deg", "robot_update",
         "revisit_min_gap",      "revisit_min_travel",
-        "rb_use_landmark_cov"};
+        "rb_use_landmark_cov",  "robot_likelihood",
+        "robot_likelihood_k"};
     return k;
 }
 
@@ -92,6 +101,10 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
         rfir::readIniDouble(c, s, "revisit_min_travel", revisitMinTravel, 0.0, false);
     rbUseLandmarkCov = rfir::readIniEnum(c, s, "rb_use_landmark_cov", {"false", "true"},
                                          rbUseLandmarkCov ? 1 : 0) == 1;
+    robotLikelihood = static_cast<TRobotLikelihood>(rfir::readIniEnum(
+        c, s, "robot_likelihood", kRobotLikNames, static_cast<size_t>(robotLikelihood)));
+    robotLikelihoodK =
+        rfir::readIniPositiveInt(c, s, "robot_likelihood_k", robotLikelihoodK);
 }
 
 void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const {
@@ -105,7 +118,10 @@ void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) 
       << "\n"
       << "revisit_min_gap      = " << revisitMinGap << "\n"
       << "revisit_min_travel   = " << revisitMinTravel << "\n"
-      << "rb_use_landmark_cov  = " << (rbUseLandmarkCov ? "true" : "false") << "\n";
+      << "rb_use_landmark_cov  = " << (rbUseLandmarkCov ? "true" : "false") << "\n"
+      << "robot_likelihood     = " << kRobotLikNames[static_cast<size_t>(robotLikelihood)]
+      << "\n"
+      << "robot_likelihood_k   = " << robotLikelihoodK << "\n";
 }
 
 CRFIDTagParticleMap::TMapDefinition::TMapDefinition() = default;

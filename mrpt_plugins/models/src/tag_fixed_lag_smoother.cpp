@@ -63,6 +63,16 @@ void TagFixedLagSmoother::update(const PointLogLikelihood& logLik,
     recomputeEstimate();  // lines 20-24
 }
 
+void TagFixedLagSmoother::moveStates(
+    const std::function<mrpt::math::TPoint2D(size_t, const mrpt::math::TPoint2D&)>& f) {
+    const size_t lag = m_p.lag;
+    for (size_t j = 0; j < m_pts.size(); j++) {
+        m_pts[j] = f(j, m_pts[j]);
+        for (size_t k = 0; k < lag; k++) m_hist[j * lag + k] = f(j, m_hist[j * lag + k]);
+    }
+    recomputeEstimate();
+}
+
 std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::smoothedParticles() const {
     // Line 20: smoothed particle = mean of its stored states t+1-L .. t.
     const size_t lag = m_p.lag;

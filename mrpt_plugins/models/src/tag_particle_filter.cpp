@@ -36,6 +36,12 @@ void TagParticleFilter::initFromPoints(std::vector<mrpt::math::TPoint2D> pts) {
     m_updates = 0;
 }
 
+void TagParticleFilter::moveStates(
+    const std::function<mrpt::math::TPoint2D(size_t, const mrpt::math::TPoint2D&)>& f) {
+    for (size_t l = 0; l < m_pts.size(); l++) m_pts[l] = f(l, m_pts[l]);
+    m_est = weightedEstimate(m_pts, m_logW);
+}
+
 void TagParticleFilter::update(const PointLogLikelihood& logLik,
                                mrpt::random::CRandomGenerator& rng) {
     if (m_pts.empty()) throw std::logic_error("TagParticleFilter::update before init");

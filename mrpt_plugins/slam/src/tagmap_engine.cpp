@@ -1,4 +1,5 @@
 #include <rfir/maps/CRFIDTagParticleMap.h>
+#include <rfir/models/resampling.h>
 #include <rfir/slam/CRobotPoseParticles.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
@@ -102,7 +103,20 @@ class CTagMapEngine : public CSlamEngine {
     void beforeWeighing(const std::vector<TDetection>& dets, bool literal,
                         const mrpt::poses::CPose2D& predicted);
     void insert(const mrpt::poses::CPose2D& at) {
+        if (map_.usesRobotSamples()) drawRobotSamples();
         for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
+    }
+    /** tag_robot_pose = samples*: the map places readers by robot poses drawn
+     * from the current (weighted) robot set; O(M) per step, not per tag. */
+    void drawRobotSamples() {
+        const auto& ps = pf_.m_particles;
+        std::vector<double> lw(ps.size());
+        for (size_t i = 0; i < ps.size(); i++) lw[i] = ps[i].log_w;
+        const auto idx = rfir::models::resampleIndices(
+            lw, ps.size(), rfir::models::ResamplingScheme::Systematic, rng_);
+        std::vector<mrpt::math::TPose2D> v(idx.size());
+        for (size_t k = 0; k < idx.size(); k++) v[k] = ps[idx[k]].d.asTPose();
+        map_.setRobotSamples(std::move(v));
     }
 
     TSlamConfig cfg_;

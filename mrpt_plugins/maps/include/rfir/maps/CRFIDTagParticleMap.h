@@ -39,6 +39,36 @@ enum class TRobotUpdatePolicy {
     RevisitAll
 };
 
+/** Which robot pose places the reader when a tag is created or re-weighed. */
+enum class TTagRobotPose {
+    /** INI "mean": the robot's mean pose (the seeds). */
+    Mean,
+    /** INI "samples_init": a new tag's particle l = a uniform point of the
+     * reader placed by a robot pose drawn from the robot's particle set
+     * (marginalises the robot pose at creation); re-reads use the mean. */
+    SamplesInit,
+    /** INI "samples": also re-reads: tag particle l is weighed against the
+     * reader placed by a freshly drawn robot pose. */
+    Samples,
+    /** INI "samples_visit": the reads of a tag's first visit share the robot's
+     * error, so they are placed by the robot mean (as the seeds), and the tag
+     * keeps, per particle, a robot pose drawn from the robot set at its first
+     * read; its estimate is the particles moved as if the robot had been at
+     * those poses (tag = drawn robot pose + position relative to the robot),
+     * and the move is made permanent when the second visit starts. */
+    SamplesVisit
+};
+
+/** What a robot particle is weighed against (see docs/tag-maps.md). */
+enum class TRobotLikelihood {
+    /** INI "tag_mean": the tag's mean estimate (the seeds). */
+    TagMean,
+    /** INI "tag_particles": the detection likelihood averaged over K tag
+     * particles (a fixed evenly spaced subset), so an uncertain tag weighs
+     * the robot less sharply than a well-known one. */
+    TagParticles
+};
+
 class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     DEFINE_SERIALIZABLE(CRFIDTagParticleMap, rfir::maps)
 
@@ -53,6 +83,13 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         rfir::models::PointEstimate estimate;  //!< cached from the estimator
         /** Estimate frozen at the start of the current visit (RevisitAll). */
         rfir::models::PointEstimate visitStartEstimate;
+        /** K tag particles for the robot likelihood (TagParticles), refreshed
+         * at every update, and the subset frozen at the visit's start. */
+        std::vector<mrpt::math::TPoint2D> sample, visitStartSample;
+        /** SamplesVisit, during the first visit: robot poses drawn at the first
+         * read (one per particle) and the robot mean they are relative to. */
+        std::vector<mrpt::math::TPose2D> spreadPoses;
+        mrpt::math::TPose2D spreadOrigin{0, 0, 0};
         uint64_t detections = 0;    //!< number of (reader, tag) reads
         uint64_t visits = 0;        //!< number of visits (first pass = 1)
         uint64_t lastReadStep = 0;  //!< index (1-based) of the last observation read in
@@ -109,6 +146,16 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
      * (seed, step), so copies made by serialization continue identically). */
     void setRandomSeed(uint64_t seed) { insertionOptions.seed = seed; }
 
+    /** Robot poses drawn from the robot's particle set (in proportion to the
+     * weights), used by the next inserts when `tag_robot_pose` is not `mean`;
+     * empty = the insert pose. Not serialized (an input of the next insert). */
+    void setRobotSamples(std::vector<mrpt::math::TPose2D> poses) {
+        m_robotSamples = std::move(poses);
+    }
+    bool usesRobotSamples() const {
+        return insertionOptions.tagRobotPose != TTagRobotPose::Mean;
+    }
+
     // CMetricMap interface
     bool isEmpty() const override;
     void saveMetricMapRepresentationToFile(
@@ -124,8 +171,9 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         double rougheningSigma = 0.0;      //!< roughening_sigma (m, PF only)
         double essThreshold = 1.0;         //!< ess_threshold (PF only)
         rfir::models::ResamplingScheme resampling =
-            rfir::models::ResamplingScheme::Systematic;  //!< resampling
-        uint64_t seed = 1;                               //!< seed
+            rfir::models::ResamplingScheme::Systematic;    //!< resampling
+        uint64_t seed = 1;                                 //!< seed
+        TTagRobotPose tagRobotPose = TTagRobotPose::Mean;  //!< tag_robot_pose
 
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;
@@ -148,6 +196,9 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         /** rb_use_landmark_cov: add the landmark estimate's covariance to the
          * range-bearing noise when weighing the robot (false = the seeds). */
         bool rbUseLandmarkCov = false;
+        /** robot_likelihood, robot_likelihood_k (K tag particles, RFID only). */
+        TRobotLikelihood robotLikelihood = TRobotLikelihood::TagMean;
+        size_t robotLikelihoodK = 12;
 
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;
@@ -175,6 +226,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     using TTable = std::unordered_map<std::string, TTagEntry>;
     TTable m_tags, m_landmarks;
     std::vector<std::string> m_landmarkNames;
+    std::vector<mrpt::math::TPose2D> m_robotSamples;
     /** Per sensor (0 = RFID, 1 = range-bearing): observations inserted, robot
      * path length over them (straight segments between insert poses), and the
      * last insert pose. Visits are counted on these. */

@@ -9,6 +9,7 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace rfir::models {
@@ -40,6 +41,12 @@ class TagFixedLagSmoother {
     /** Re-detection (Alg. 2 lines 10-24): random step, weigh, store, resample
      * with histories, smooth, estimate. */
     void update(const PointLogLikelihood& logLik, mrpt::random::CRandomGenerator& rng);
+
+    /** Moves particle j and its whole stored history by f(j, state) and
+     * refreshes the estimate. */
+    void moveStates(
+        const std::function<mrpt::math::TPoint2D(size_t, const mrpt::math::TPoint2D&)>&
+            f);
 
     const PointEstimate& estimate() const { return m_est; }
     /** Current (filtered) states. */

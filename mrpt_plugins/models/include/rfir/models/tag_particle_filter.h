@@ -9,6 +9,7 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace rfir::models {
@@ -41,6 +42,13 @@ class TagParticleFilter {
     /** Re-detection: weigh every particle by logLik, take the weighted mean as
      * the estimate (line 13), then resample (lines 14-18). */
     void update(const PointLogLikelihood& logLik, mrpt::random::CRandomGenerator& rng);
+
+    /** Moves particle j to f(j, particle j) (keeps the weights) and refreshes
+     * the estimate: e.g. a tag mapped relative to the robot placed by a robot
+     * pose drawn per particle. */
+    void moveStates(
+        const std::function<mrpt::math::TPoint2D(size_t, const mrpt::math::TPoint2D&)>&
+            f);
 
     const PointEstimate& estimate() const { return m_est; }
     const std::vector<mrpt::math::TPoint2D>& particles() const { return m_pts; }

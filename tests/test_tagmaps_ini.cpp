@@ -105,6 +105,9 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey) {
         {"likelihoodOpts", "revisit_min_gap = 0", "revisit_min_gap"},
         {"likelihoodOpts", "revisit_min_travel = -0.1", "revisit_min_travel"},
         {"likelihoodOpts", "robotupdate = literal", "robotupdate"},
+        {"insertOpts", "tag_robot_pose = median", "tag_robot_pose"},
+        {"likelihoodOpts", "robot_likelihood = tags", "robot_likelihood"},
+        {"likelihoodOpts", "robot_likelihood_k = 0", "robot_likelihood_k"},
     };
     for (const auto& c : cases) {
         const std::string err = loadError(c.section, c.line);
@@ -155,6 +158,8 @@ TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically) {
         a.likelihoodOptions.robotUpdate = rfir::maps::TRobotUpdatePolicy::Revisit;
         a.insertionOptions.rougheningSigma = 0.001;
         a.likelihoodOptions.revisitMinTravel = 0.05;
+        a.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagParticles;
+        a.likelihoodOptions.robotLikelihoodK = 5;
         buildMap(a, kind, 0.6);
         mrpt::io::CMemoryStream buf;
         mrpt::serialization::archiveFrom(buf) << a;
@@ -167,6 +172,8 @@ TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically) {
         EXPECT_EQ(b.insertionOptions.rougheningSigma, 0.001);
         EXPECT_EQ(b.likelihoodOptions.robotUpdate,
                   rfir::maps::TRobotUpdatePolicy::Revisit);
+        EXPECT_EQ(b.likelihoodOptions.robotLikelihoodK, 5u);
+        EXPECT_EQ(b.tags().front()->sample, a.tags().front()->sample);
         // Both copies continue identically (per-step generators from the seed).
         const auto tags = grid(3, 0.25);
         for (const auto& p : lawnmower(0.0, 0.6, 0.05, 0.5, 0.1, 0.03)) {

@@ -58,6 +58,7 @@ double ll(const CIREmitterMap& m, const CObservationIRSignals& o, double x, doub
 
 TEST(IREmitterMap, UniqueReadingLikelihoodByHand) {
     CIREmitterMap m;
+    m.likelihoodOptions.params.sigmaVolts = 0.1;
     m.loadEmitterFile(writeFile("a.txt", kEmitters));
     EXPECT_EQ(m.emitters().emitters().size(), 3u);
     EXPECT_EQ(m.emitters().uniqueEmitterCount(), 1u);
@@ -78,6 +79,7 @@ TEST(IREmitterMap, UniqueReadingLikelihoodByHand) {
 
 TEST(IREmitterMap, RepeatedIdAssociationAgainstEstimate) {
     CIREmitterMap m;
+    m.likelihoodOptions.params.sigmaVolts = 0.1;
     m.loadEmitterFile(writeFile("b.txt", kEmitters));
     const auto obs = reading("1", 1.77847);  // exactly Vbar at d = 0.1
     // No estimate yet: the thesis cannot compute eq. 5.1, the reading is skipped.

@@ -61,14 +61,18 @@ TEST(IRModel, ReceiverInWorld) {
 }
 
 TEST(IRModel, ReadingLikelihood) {
-    TIRLikelihoodParams p;  // sigma 0.1 V, out of range -8
+    TIRLikelihoodParams p;  // out of range -8, ramp 0.05 m
+    p.sigmaVolts = 0.1;
     TEmitter e;
     e.x = 0.2;
     // d = 0.2: Vbar = 1.08297; -(1 - 1.08297)^2 / 0.02
     EXPECT_NEAR(readingLogLikelihood(1.0, {0, 0}, e, 1.2, p), -0.0068840209 / 0.02, 1e-9);
     e.x = 0.4;  // out of sight: Vbar = 0, -1/0.02 - 8
     EXPECT_NEAR(readingLogLikelihood(1.0, {0, 0}, e, 1.2, p), -58.0, 1e-9);
+    e.x = 0.305;  // 0.025 m past the visible radius: half the out-of-range term
+    EXPECT_NEAR(readingLogLikelihood(1.0, {0, 0}, e, 1.2, p), -50.0 - 4.0, 1e-9);
     p.outOfRangeLogLik = 0;  // the seed's eq. 5.2 alone
+    e.x = 0.4;
     EXPECT_NEAR(readingLogLikelihood(1.0, {0, 0}, e, 1.2, p), -50.0, 1e-9);
 }
 

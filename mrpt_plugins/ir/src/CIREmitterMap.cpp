@@ -148,7 +148,7 @@ std::string CIREmitterMap::asString() const {
 }
 
 uint8_t CIREmitterMap::serializeGetVersion() const {
-    return 2;
+    return 3;
 }
 
 void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
@@ -157,7 +157,7 @@ void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
         << p.curve.maxDistance << uint8_t(p.curve.heightModel) << p.sigmaVolts
         << p.sigmaBelief << p.outOfRangeLogLik << uint8_t(likelihoodOptions.association)
         << likelihoodOptions.verticalDistance << p.missLogLik << p.missRadiusFraction
-        << p.areaMargin << p.outOfAreaLogLik;
+        << p.areaMargin << p.outOfAreaLogLik << p.outOfRangeRamp;
     out.WriteAs<uint32_t>(m_emitters.emitters().size());
     for (const auto& e : m_emitters.emitters()) out << e.id << e.x << e.y << e.z;
     out << bool(m_reference);
@@ -165,7 +165,7 @@ void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
 }
 
 void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version > 2) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    if (version > 3) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     auto& p = likelihoodOptions.params;
     uint8_t hm = 0, as = 0;
     in >> p.curve.c0 >> p.curve.c1 >> p.curve.c2 >> p.curve.fitHeight >>
@@ -182,6 +182,10 @@ void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ver
         in >> p.areaMargin >> p.outOfAreaLogLik;
     else
         p.outOfAreaLogLik = 0;  // no area term before version 2
+    if (version >= 3)
+        in >> p.outOfRangeRamp;
+    else
+        p.outOfRangeRamp = 0;  // a step before version 3
     likelihoodOptions.association = TAssociation(as);
     const uint32_t n = in.ReadAs<uint32_t>();
     std::vector<rfir::ir::TEmitter> em(n);

@@ -33,7 +33,8 @@ const std::vector<std::string>& CIREmitterMap::TLikelihoodOptions::allowedKeys()
                                                "miss_loglik",
                                                "miss_radius_fraction",
                                                "area_margin",
-                                               "out_of_area_loglik"};
+                                               "out_of_area_loglik",
+                                               "out_of_range_ramp"};
     return k;
 }
 
@@ -55,6 +56,8 @@ void CIREmitterMap::TLikelihoodOptions::loadFromConfigFile(
     params.missLogLik = ini::readDouble(c, s, "miss_loglik", params.missLogLik, -1e6, 0);
     params.missRadiusFraction =
         ini::readDouble(c, s, "miss_radius_fraction", params.missRadiusFraction, 0, 1);
+    params.outOfRangeRamp =
+        ini::readDouble(c, s, "out_of_range_ramp", params.outOfRangeRamp, 0);
     params.areaMargin = ini::readDouble(c, s, "area_margin", params.areaMargin, 0);
     params.outOfAreaLogLik =
         ini::readDouble(c, s, "out_of_area_loglik", params.outOfAreaLogLik, -1e6, 0);
@@ -76,6 +79,7 @@ void CIREmitterMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const 
       << "out_of_range_loglik = " << params.outOfRangeLogLik << "\n"
       << "miss_loglik         = " << params.missLogLik << "\n"
       << "miss_radius_fraction = " << params.missRadiusFraction << "\n"
+      << "out_of_range_ramp   = " << params.outOfRangeRamp << "\n"
       << "area_margin         = " << params.areaMargin << "\n"
       << "out_of_area_loglik  = " << params.outOfAreaLogLik << "\n"
       << "association         = " << kAssociations[size_t(association)] << "\n"

@@ -167,7 +167,8 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
 double CIRLocalizer::fractionInView(const CObservationIRSignals::TReading& r,
                                     const TEmitter& e) const {
     const double R = m_map->likelihoodOptions.params.curve.visibleRadius(
-        m_map->verticalDistance(e, r.receiver));
+                         m_map->verticalDistance(e, r.receiver)) +
+                     m_params.resetViewMargin;
     double maxLw = -1e300, in = 0, all = 0;
     for (const auto& p : m_pdf.m_particles) maxLw = std::max(maxLw, p.log_w);
     for (const auto& p : m_pdf.m_particles) {
@@ -194,7 +195,8 @@ size_t CIRLocalizer::sensorReset(const CObservationIRSignals& obs, bool all) {
         // random order: Fisher-Yates with our generator (MRPT's shuffle seeds
         // itself from std::random_device: not reproducible).
         const double R = m_map->likelihoodOptions.params.curve.visibleRadius(
-            m_map->verticalDistance(e, r.receiver));
+                             m_map->verticalDistance(e, r.receiver)) +
+                         m_params.resetViewMargin;
         std::vector<size_t> perm;
         double maxLw = -1e300;
         for (size_t i = 0; i < m_pdf.m_particles.size(); i++) {

@@ -41,7 +41,7 @@ void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     ini::checkKeys(c, s,
                    {"num_particles", "init_area", "init_margin", "start_from_reading",
                     "sensor_resetting", "reset_min_fraction", "reset_ratio",
-                    "reset_distance_sigma", "repeated_before_unique",
+                    "reset_distance_sigma", "reset_view_margin", "repeated_before_unique",
                     "association_max_std", "ess_threshold", "resampling", "decode_raw"});
     numParticles = ini::readSize(c, s, "num_particles", numParticles, 1, 10000000);
     readArea(c, s, *this);
@@ -53,6 +53,7 @@ void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     resetRatio = ini::readDouble(c, s, "reset_ratio", resetRatio, 0, 1);
     resetDistanceSigma =
         ini::readDouble(c, s, "reset_distance_sigma", resetDistanceSigma, 0);
+    resetViewMargin = ini::readDouble(c, s, "reset_view_margin", resetViewMargin, 0);
     repeatedBeforeUnique =
         ini::readBool(c, s, "repeated_before_unique", repeatedBeforeUnique);
     associationMaxStd =
@@ -90,6 +91,7 @@ void TLocalizerParams::dumpToTextStream(std::ostream& o) const {
       << "reset_min_fraction = " << resetMinFraction << "\n"
       << "reset_ratio = " << resetRatio << "\n"
       << "reset_distance_sigma = " << resetDistanceSigma << "\n"
+      << "reset_view_margin = " << resetViewMargin << "\n"
       << "repeated_before_unique = " << b(repeatedBeforeUnique) << "\n"
       << "association_max_std = " << associationMaxStd << "\n"
       << "ess_threshold = " << essThreshold << "\n"

@@ -62,7 +62,10 @@ double readingLogLikelihood(double v, const mrpt::math::TPoint2D& rcv, const TEm
                             double h, const TIRLikelihoodParams& p) {
     const double d = std::hypot(e.x - rcv.x, e.y - rcv.y);
     double ll = voltageLogLikelihood(v, p.curve.expected(d, h), p.sigmaVolts);
-    if (d > p.curve.visibleRadius(h)) ll += p.outOfRangeLogLik;
+    const double beyond = d - p.curve.visibleRadius(h);
+    if (beyond > 0)
+        ll += p.outOfRangeLogLik *
+              (p.outOfRangeRamp > 0 ? std::min(1.0, beyond / p.outOfRangeRamp) : 1.0);
     return ll;
 }
 

@@ -47,6 +47,9 @@ struct TLocalizerParams : public mrpt::config::CLoadableOptions {
     double resetMinFraction = 0.001;   //!< reset_min_fraction: weight in view below it
     double resetRatio = 0.5;           //!< reset_ratio: share of particles redrawn
     double resetDistanceSigma = 0.02;  //!< reset_distance_sigma (m)
+    /** reset_view_margin (m): "in view" for resetting means within the visible
+     * radius plus this, so a good track at the edge of view is not reset. */
+    double resetViewMargin = 0.1;
     /** repeated_before_unique: use repeated-ID readings before the first
      * unique one (association = particle only; the thesis waits). */
     bool repeatedBeforeUnique = false;

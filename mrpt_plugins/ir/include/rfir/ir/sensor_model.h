@@ -62,12 +62,20 @@ mrpt::math::TPoint2D receiverInWorld(const mrpt::math::TPose2D& robot,
 /** Parameters of the per-reading likelihood beyond eq. 5.2. */
 struct TIRLikelihoodParams {
     TVoltageCurve curve;
-    double sigmaVolts = 0.1;    //!< sigma of eq. 5.2 (the seed does not give it)
+    /** sigma of eq. 5.2 (the seed does not give it). Wider than the voltage
+     * noise: readings at 10 Hz of one emitter are strongly correlated, and a
+     * narrow sigma depletes the particles while the heading is still ambiguous
+     * (docs/results_ir.md). */
+    double sigmaVolts = 0.2;
     double sigmaBelief = 0.03;  //!< sigma of eq. 5.1 (seed: 30 mm)
     /** Log-likelihood added when the receiver would be beyond the detected
      * emitter's visible radius (it could not have seen it); 0 disables it
      * (the seed's eq. 5.2 alone). */
     double outOfRangeLogLik = -8.0;
+    /** The out-of-range term ramps in linearly over this distance (m) past the
+     * visible radius, so that a track a centimetre off at the edge of view is
+     * not thrown away. */
+    double outOfRangeRamp = 0.05;
     /** Negative information (not in the seed): log-likelihood added when a
      * receiver that saw nothing would be within missRadiusFraction of the
      * visible radius of some emitter of the map; 0 disables it. Failed

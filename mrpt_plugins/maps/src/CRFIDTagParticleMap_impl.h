@@ -1,0 +1,339 @@
+/* rfir: CRFIDTagParticleMap internals: visits, per-tag updates, the robot's
+ * likelihood per read, and the robot- / tag-uncertainty options (included by
+ * CRFIDTagParticleMap.cpp only). */
+#pragma once
+
+#include <rfir/maps/CRFIDTagParticleMap.h>
+#include <rfir/obs/CObservationRFIDReaders.h>
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rfir::maps {
+using rfir::models::PointEstimate;
+using rfir::models::ReaderArea;
+
+struct CRFIDTagParticleMapImpl {
+    using Map = CRFIDTagParticleMap;
+    using Entry = Map::TTagEntry;
+
+    static uint32_t stepSeed(uint64_t seed, uint64_t salt) {
+        // splitmix64: decorrelates consecutive steps; the generator depends only
+        // on (seed, step), so serialized copies continue identically.
+        uint64_t z = seed * 0x9E3779B97F4A7C15ULL + salt + 0x632BE59BD9B4E019ULL;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return static_cast<uint32_t>((z ^ (z >> 31)) & 0xFFFFFFFFULL);
+    }
+
+    static Map::TEstimator makeEstimator(const Map::TInsertionOptions& o) {
+        if (o.estimator == TTagEstimatorKind::ParticleFilter) {
+            rfir::models::TagParticleFilterParams p;
+            p.numParticles = o.numParticles;
+            p.resampling = o.resampling;
+            p.essThreshold = o.essThreshold;
+            p.rougheningSigma = o.rougheningSigma;
+            return rfir::models::TagParticleFilter(p);
+        }
+        rfir::models::TagFixedLagSmootherParams p;
+        p.numParticles = o.numParticles;
+        p.lag = o.lag;
+        p.stepSigma = o.smootherStepSigma;
+        p.resampling = o.resampling;
+        return rfir::models::TagFixedLagSmoother(p);
+    }
+
+    /** Refreshes the cached estimate and, for robot_likelihood = tag_particles,
+     * the K evenly spaced particles of the set the estimate is built from (PF:
+     * the resampled set; smoother: the smoothed set). */
+    static void refresh(const Map& m, Entry& e) {
+        e.estimate = std::visit([](auto& est) { return est.estimate(); }, e.estimator);
+        const bool spread = !e.spreadPoses.empty();
+        if (!spread &&
+            m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles)
+            return;
+        std::vector<mrpt::math::TPoint2D> pts;
+        if (const auto* ps = std::get_if<rfir::models::TagFixedLagSmoother>(&e.estimator))
+            pts = ps->smoothedParticles();
+        else
+            pts = e.particles();
+        if (spread) {
+            for (size_t j = 0; j < pts.size(); j++) pts[j] = spreadPoint(e, j, pts[j]);
+            e.estimate = rfir::models::weightedEstimate(pts, {});
+        }
+        if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles) return;
+        const size_t n = pts.size(),
+                     K = std::min(n, m.likelihoodOptions.robotLikelihoodK);
+        e.sample.resize(K);
+        for (size_t k = 0; k < K; k++) e.sample[k] = pts[(2 * k + 1) * n / (2 * K)];
+    }
+
+    /** SamplesVisit: particle j, placed by the robot mean C, as if the robot
+     * had been at the drawn pose S_j: S_j + R(S_j) R(C)^T (p - C). */
+    static mrpt::math::TPoint2D spreadPoint(const Entry& e, size_t j,
+                                            const mrpt::math::TPoint2D& p) {
+        const auto& C = e.spreadOrigin;
+        const auto& S = e.spreadPoses[j % e.spreadPoses.size()];
+        const double c = std::cos(C.phi), s = std::sin(C.phi);
+        const double lx = c * (p.x - C.x) + s * (p.y - C.y),
+                     ly = -s * (p.x - C.x) + c * (p.y - C.y);
+        const double cs = std::cos(S.phi), ss = std::sin(S.phi);
+        return {S.x + cs * lx - ss * ly, S.y + ss * lx + cs * ly};
+    }
+
+    /** SamplesVisit: the first visit is over; move the estimator's states for
+     * good (the later reads are placed by a robot that has moved on). */
+    static void commitSpread(const Map& m, Entry& e) {
+        if (e.spreadPoses.empty()) return;
+        const auto f = [&](size_t j, const mrpt::math::TPoint2D& p) {
+            return spreadPoint(e, j, p);
+        };
+        std::visit([&](auto& est) { est.moveStates(f); }, e.estimator);
+        e.spreadPoses.clear();
+        e.spreadPoses.shrink_to_fit();
+        refresh(m, e);
+    }
+
+    /** Re-weigh/resample an entry's estimator with a likelihood, refresh cache. */
+    static void update(const Map& m, Entry& e, const rfir::models::PointLogLikelihood& f,
+                       mrpt::random::CRandomGenerator& rng) {
+        std::visit([&](auto& est) { est.update(f, rng); }, e.estimator);
+        refresh(m, e);
+    }
+
+    /** The robot pose that places the reader for one tag particle: the insert
+     * pose, or (tag_robot_pose = samples) a pose drawn from the robot set. */
+    static const mrpt::math::TPose2D& robotFor(const Map& m, bool drawn,
+                                               const mrpt::math::TPose2D& robot,
+                                               mrpt::random::CRandomGenerator& rng) {
+        const auto& s = m.m_robotSamples;
+        if (!drawn || s.empty()) return robot;
+        return s[rng.drawUniform32bit() % s.size()];
+    }
+
+    /** A new tag's particles: uniform over the reader's rectangle placed by the
+     * robot mean (the seeds) or, per particle, by a drawn robot pose. */
+    static void initTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
+                        const ReaderArea& r, mrpt::random::CRandomGenerator& rng) {
+        const auto mode = m.insertionOptions.tagRobotPose;
+        if (mode == TTagRobotPose::Mean || mode == TTagRobotPose::SamplesVisit ||
+            m.m_robotSamples.empty()) {
+            std::visit([&](auto& est) { est.initUniform(robot, r, rng); }, e.estimator);
+            if (mode == TTagRobotPose::SamplesVisit && !m.m_robotSamples.empty()) {
+                e.spreadOrigin = robot;
+                e.spreadPoses.resize(m.insertionOptions.numParticles);
+                for (auto& q : e.spreadPoses) q = robotFor(m, true, robot, rng);
+            }
+        } else {
+            std::vector<mrpt::math::TPoint2D> pts(m.insertionOptions.numParticles);
+            for (auto& p : pts) {
+                const auto& pose = robotFor(m, true, robot, rng);
+                ReaderArea off = r;
+                off.x = r.x + rng.drawUniform(-r.halfX, r.halfX);
+                off.y = r.y + rng.drawUniform(-r.halfY, r.halfY);
+                p = rfir::models::readerCentreInWorld(pose, off);
+            }
+            std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
+                       e.estimator);
+        }
+        refresh(m, e);
+    }
+
+    /** Would a read of `e` in the next observation of a sensor whose track is
+     * `t` (not yet advanced by that observation) start a new visit? The same
+     * test serves the likelihood (before insertion) and the insertion. */
+    static bool newVisit(const Map& m, const Entry& e, const Map::TSensorTrack& t) {
+        const auto& lo = m.likelihoodOptions;
+        return e.visits == 0 || (t.steps - e.lastReadStep >= lo.revisitMinGap &&
+                                 t.travel - e.lastReadTravel >= lo.revisitMinTravel);
+    }
+
+    /** Advances a sensor's track by one inserted observation at `robot`. */
+    static uint64_t advance(Map::TSensorTrack& t, const mrpt::math::TPose2D& robot) {
+        if (t.hasPose) t.travel += std::hypot(robot.x - t.lastX, robot.y - t.lastY);
+        t.hasPose = true;
+        t.lastX = robot.x;
+        t.lastY = robot.y;
+        return ++t.steps;
+    }
+
+    /** Marks a read; starts a new visit (freezing the estimate) if due. `before`
+     * is the track as it was before this observation. */
+    static void markRead(const Map& m, Entry& e, const Map::TSensorTrack& before,
+                         const Map::TSensorTrack& now, size_t reads) {
+        if (newVisit(m, e, before)) {
+            if (e.visits >= 1) commitSpread(m, e);
+            e.visits++;
+            e.visitStartEstimate = e.estimate;
+            e.visitStartSample = e.sample;
+        }
+        e.lastReadStep = now.steps;
+        e.lastReadTravel = now.travel;
+        e.detections += reads;
+    }
+
+    enum class Which { None, Current, VisitStart };
+    /** Which estimate (if any) weighs the robot for a read of `e`, per policy. */
+    static Which whichForRobot(const Map& m, const Entry& e, const Map::TSensorTrack& t) {
+        const auto& lo = m.likelihoodOptions;
+        if (lo.robotUpdate == TRobotUpdatePolicy::Literal) return Which::Current;
+        // Called before this observation is inserted.
+        if (newVisit(m, e, t)) return Which::Current;  // the estimate before this visit
+        if (lo.robotUpdate == TRobotUpdatePolicy::RevisitAll && e.visits >= 2)
+            return Which::VisitStart;
+        return Which::None;  // consecutive re-read (or first pass): nothing new
+    }
+    static const PointEstimate* estimateForRobot(const Map& m, const Entry& e,
+                                                 const Map::TSensorTrack& t) {
+        const Which w = whichForRobot(m, e, t);
+        return w == Which::None      ? nullptr
+               : w == Which::Current ? &e.estimate
+                                     : &e.visitStartEstimate;
+    }
+
+    /** Robot log-likelihood of one read of `e` by reader `r`: against the tag
+     * mean, or (tag_particles) log of the mean likelihood over the K stored
+     * tag particles, i.e. the detection likelihood marginalised over the tag's
+     * uncertainty (O(K)). */
+    static double robotReadLogLik(const Map& m, const Entry& e, Which w,
+                                  const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                                  const rfir::models::DetectionLikelihood& det) {
+        const auto& smp = w == Which::Current ? e.sample : e.visitStartSample;
+        if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles ||
+            smp.empty()) {
+            const auto& est = w == Which::Current ? e.estimate : e.visitStartEstimate;
+            return det.logLikelihood(robot, r, est.mean);
+        }
+        double ll[64], best = -1e300;
+        const size_t K = std::min<size_t>(smp.size(), 64);
+        for (size_t k = 0; k < K; k++)
+            best = std::max(best, ll[k] = det.logLikelihood(robot, r, smp[k]));
+        double s = 0;
+        for (size_t k = 0; k < K; k++) s += std::exp(ll[k] - best);
+        return best + std::log(s / double(K));
+    }
+
+    static ReaderArea area(const rfir::obs::TRFIDReader& r) {
+        if (!(r.halfX > 0) || !(r.halfY > 0))
+            throw std::runtime_error("CRFIDTagParticleMap: reader '" + r.id +
+                                     "' has a non-positive half-size");
+        return {r.x, r.y, r.halfX, r.halfY};
+    }
+
+    static void insertRFID(Map& m, const rfir::obs::CObservationRFIDReaders& o,
+                           const mrpt::math::TPose2D& robot) {
+        const Map::TSensorTrack before = m.m_track[0];
+        const uint64_t step = advance(m.m_track[0], robot);
+        mrpt::random::CRandomGenerator rng(stepSeed(m.insertionOptions.seed, 2 * step));
+        // Group the readers that read each tag at this instant (order kept).
+        std::vector<std::pair<std::string, std::vector<ReaderArea>>> groups;
+        std::unordered_map<std::string, size_t> where;
+        for (const auto& rd : o.readings)
+            for (const auto& id : rd.tags) {
+                auto [it, isNew] = where.emplace(id, groups.size());
+                if (isNew) groups.push_back({id, {}});
+                groups[it->second].second.push_back(area(rd.reader));
+            }
+        const rfir::models::DetectionLikelihood det(m.likelihoodOptions.detection);
+        for (auto& [id, areas] : groups) {
+            auto it = m.m_tags.find(id);
+            size_t first = 0;
+            if (it == m.m_tags.end()) {
+                // New tag: particles over the first detecting reader (geometry
+                // from the observation), weighed by any other reader.
+                Entry e;
+                e.id = id;
+                e.estimator = makeEstimator(m.insertionOptions);
+                initTag(m, e, robot, areas[0], rng);
+                it = m.m_tags.emplace(id, std::move(e)).first;
+                first = 1;
+            }
+            Entry& e = it->second;
+            markRead(m, e, before, m.m_track[0], areas.size());
+            if (first < areas.size()) {
+                const std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
+                const bool drawn =
+                    m.insertionOptions.tagRobotPose == TTagRobotPose::Samples;
+                update(
+                    m, e,
+                    [&](const mrpt::math::TPoint2D& p) {
+                        const auto& pose = robotFor(m, drawn, robot, rng);
+                        double s = 0;
+                        for (const auto& a : rest) s += det.logLikelihood(pose, a, p);
+                        return s;
+                    },
+                    rng);
+            }
+            m.m_lastTouched++;
+        }
+    }
+
+    static mrpt::math::TPose2D sensorPose(const mrpt::obs::CObservationBearingRange& o,
+                                          const mrpt::math::TPose2D& robot) {
+        const auto& s = o.sensorLocationOnRobot;
+        const double c = std::cos(robot.phi), sn = std::sin(robot.phi);
+        return {robot.x + c * s.x() - sn * s.y(), robot.y + sn * s.x() + c * s.y(),
+                mrpt::math::wrapToPi(robot.phi + s.yaw())};
+    }
+
+    static void insertRB(Map& m, const mrpt::obs::CObservationBearingRange& o,
+                         const mrpt::math::TPose2D& robot) {
+        const Map::TSensorTrack before = m.m_track[1];
+        const uint64_t step = advance(m.m_track[1], robot);
+        mrpt::random::CRandomGenerator rng(
+            stepSeed(m.insertionOptions.seed, 2 * step + 1));
+        const auto sensor = sensorPose(o, robot);
+        const auto& rb = m.likelihoodOptions.rangeBearing;
+        for (const auto& z : o.sensedData) {
+            const std::string id = m.landmarkName(z.landmarkID);
+            auto it = m.m_landmarks.find(id);
+            if (it == m.m_landmarks.end()) {
+                // New landmark: samples of the noisy inverse model.
+                Entry e;
+                e.id = id;
+                e.estimator = makeEstimator(m.insertionOptions);
+                auto pts = rfir::models::sampleRangeBearingInverse(
+                    sensor, z.range, z.yaw, rb, m.insertionOptions.numParticles, rng);
+                std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
+                           e.estimator);
+                refresh(m, e);
+                markRead(m, e, before, m.m_track[1], 1);
+                m.m_landmarks.emplace(id, std::move(e));
+            } else {
+                markRead(m, it->second, before, m.m_track[1], 1);
+                update(
+                    m, it->second,
+                    [&](const mrpt::math::TPoint2D& p) {
+                        return rfir::models::rangeBearingLogLikelihood(sensor, p, z.range,
+                                                                       z.yaw, rb);
+                    },
+                    rng);
+            }
+            m.m_lastTouched++;
+        }
+    }
+
+    static double rbLogLik(const Map& m, const PointEstimate& est,
+                           const mrpt::math::TPose2D& sensor, double range, double yaw) {
+        auto p = m.likelihoodOptions.rangeBearing;
+        if (m.likelihoodOptions.rbUseLandmarkCov) {
+            // Linearised: landmark covariance projected on the range and
+            // bearing directions, added to the sensor noise.
+            double r, b;
+            rfir::models::predictRangeBearing(sensor, est.mean, r, b);
+            const double a = sensor.phi + b, c = std::cos(a), s = std::sin(a);
+            const auto& P = est.cov;
+            const double vr = c * c * P(0, 0) + 2 * c * s * P(0, 1) + s * s * P(1, 1);
+            const double vt = s * s * P(0, 0) - 2 * c * s * P(0, 1) + c * c * P(1, 1);
+            p.sigmaRange = std::sqrt(p.sigmaRange * p.sigmaRange + vr);
+            p.sigmaBearing =
+                std::sqrt(p.sigmaBearing * p.sigmaBearing + vt / std::max(r * r, 1e-6));
+        }
+        return rfir::models::rangeBearingLogLikelihood(sensor, est.mean, range, yaw, p);
+    }
+};
+}  // namespace rfir::maps

@@ -12,12 +12,15 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 const std::string kBin = std::string(RFIR_BINARY_DIR) + "/bin/";
-const std::string kDir = std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_apps";
+// Per process: ctest runs every test case as its own process, in parallel.
+const std::string kDir =
+    std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_apps_" + std::to_string(::getpid());
 
 std::string slurp(const std::string& p) {
     std::ifstream f(p);

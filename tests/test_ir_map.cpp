@@ -14,13 +14,15 @@
 
 #include <cmath>
 #include <fstream>
+#include <unistd.h>
 
 using namespace rfir::maps;
 using rfir::obs::CObservationIRSignals;
 
 namespace {
 std::string tmpDir() {
-    const std::string d = std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_map";
+    const std::string d = std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_map_" +
+                          std::to_string(::getpid());
     std::system(("mkdir -p '" + d + "'").c_str());
     return d;
 }

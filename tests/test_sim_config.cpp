@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using rfir::sim::loadSimConfig;
@@ -16,7 +17,8 @@ namespace
 {
 std::string tmpIni(const std::string& name, const std::string& text)
 {
-    const auto dir = fs::temp_directory_path() / "rfir_test_sim_config";
+    const auto dir = fs::temp_directory_path() /
+                     ("rfir_test_sim_config_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const auto p = (dir / name).string();
     std::ofstream(p) << text;
@@ -161,7 +163,8 @@ TEST(SimConfig, StockInisLoadAndRun)
 TEST(SimCli, WritesFilesAndRejectsBadInput)
 {
     const std::string bin = std::string(RFIR_BINARY_DIR) + "/bin/rfir-sim";
-    const auto dir = fs::temp_directory_path() / "rfir_test_sim_cli";
+    const auto dir = fs::temp_directory_path() /
+                     ("rfir_test_sim_cli_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     const auto ini = tmpIni("cli_run.ini", "[simulation]\nmax_duration = 4\n");
     const std::string cmd = bin + " --config " + ini + " --out-dir " + dir.string() +

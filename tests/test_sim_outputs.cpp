@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace rfir::sim;
@@ -27,7 +28,7 @@ std::string slurp(const fs::path& p)
 
 fs::path runTo(const TSimConfig& c, uint64_t seed, const std::string& sub)
 {
-    const auto dir = fs::temp_directory_path() / "rfir_test_sim_outputs" / sub;
+    const auto dir = fs::temp_directory_path() / ("rfir_test_sim_outputs_" + std::to_string(::getpid())) / sub;
     fs::remove_all(dir);
     fs::create_directories(dir);
     writeOutputs(simulate(c, seed), dir.string(), "run");
@@ -63,7 +64,7 @@ TEST(SimOutputs, RawlogReadsBackWithGroundTruth)
     auto c = shortMixed();
     c.trajectory.spots = 50;  // one every 0.72 m: a few within the 15 s
     const auto out = simulate(c, 13);
-    const auto dir = fs::temp_directory_path() / "rfir_test_sim_outputs" / "rb";
+    const auto dir = fs::temp_directory_path() / ("rfir_test_sim_outputs_" + std::to_string(::getpid())) / "rb";
     fs::create_directories(dir);
     writeOutputs(out, dir.string(), "x");
     rfir::common::CRawlogReader rd((dir / "x.rawlog").string());

@@ -31,6 +31,7 @@ std::string slurp(const std::string& p) {
 
 /** Runs a command line; returns its exit code, stdout and stderr. */
 int sh(const std::string& cmd, std::string* out = nullptr, std::string* err = nullptr) {
+    fs::create_directories(kDir);
     const std::string o = kDir + "/stdout.txt", e = kDir + "/stderr.txt";
     const int rc = std::system((cmd + " > '" + o + "' 2> '" + e + "'").c_str());
     if (out) *out = slurp(o);

@@ -21,6 +21,7 @@ const std::string kBin = std::string(RFIR_BINARY_DIR) + "/bin/";
 // Per process: ctest runs every test case as its own process, in parallel.
 const std::string kDir =
     std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_apps_" + std::to_string(::getpid());
+const bool kDirMade = (fs::create_directories(kDir), true);
 
 std::string slurp(const std::string& p) {
     std::ifstream f(p);
@@ -31,7 +32,6 @@ std::string slurp(const std::string& p) {
 
 /** Runs a command line; returns its exit code, stdout and stderr. */
 int sh(const std::string& cmd, std::string* out = nullptr, std::string* err = nullptr) {
-    fs::create_directories(kDir);
     const std::string o = kDir + "/stdout.txt", e = kDir + "/stderr.txt";
     const int rc = std::system((cmd + " > '" + o + "' 2> '" + e + "'").c_str());
     if (out) *out = slurp(o);

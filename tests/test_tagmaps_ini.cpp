@@ -106,6 +106,7 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey) {
         {"likelihoodOpts", "revisit_min_travel = -0.1", "revisit_min_travel"},
         {"likelihoodOpts", "robotupdate = literal", "robotupdate"},
         {"insertOpts", "tag_robot_pose = median", "tag_robot_pose"},
+        {"insertOpts", "spread_commit_travel = -1", "spread_commit_travel"},
         {"likelihoodOpts", "robot_likelihood = tags", "robot_likelihood"},
         {"likelihoodOpts", "robot_likelihood_k = 0", "robot_likelihood_k"},
     };

@@ -322,3 +322,21 @@ TEST(TagMap, FirstVisitSpreadByRobotSamples) {
     for (const auto& p : t->particles()) moved += std::abs(p.x - 0.1) > 0.03 + 1e-9;
     EXPECT_GT(moved, 20u);
 }
+
+// spread_commit_travel: a new visit after a short trip (the next reader of
+// the same pass) keeps the spread pending; a long one commits it.
+TEST(TagMap, SpreadCommitNeedsTravel) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.tagRobotPose = rfir::maps::TTagRobotPose::SamplesVisit;
+    m.insertionOptions.spreadCommitTravel = 2.0;
+    m.setRobotSamples({{-0.2, 0, 0}, {0.2, 0, 0}});
+    const auto o = oneRead("T");
+    m.insertObservation(*o, pose3({0, 0, 0}));
+    m.insertObservation(*oneRead(""), pose3({0.5, 0, 0}));
+    m.insertObservation(*o, pose3({0, 0, 0}));  // a new visit after 1 m
+    EXPECT_EQ(m.getTag("T")->visits, 2u);
+    EXPECT_EQ(m.getTag("T")->spreadPoses.size(), 100u);
+    m.insertObservation(*oneRead(""), pose3({1.5, 0, 0}));
+    m.insertObservation(*o, pose3({0, 0, 0}));  // after 4 m
+    EXPECT_TRUE(m.getTag("T")->spreadPoses.empty());
+}

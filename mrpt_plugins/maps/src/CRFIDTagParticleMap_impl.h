@@ -125,6 +125,7 @@ struct CRFIDTagParticleMapImpl {
             std::visit([&](auto& est) { est.initUniform(robot, r, rng); }, e.estimator);
             if (mode == TTagRobotPose::SamplesVisit && !m.m_robotSamples.empty()) {
                 e.spreadOrigin = robot;
+                e.spreadTravel = m.m_track[0].travel;
                 e.spreadPoses.resize(m.insertionOptions.numParticles);
                 for (auto& q : e.spreadPoses) q = robotFor(m, true, robot, rng);
             }
@@ -166,7 +167,9 @@ struct CRFIDTagParticleMapImpl {
     static void markRead(const Map& m, Entry& e, const Map::TSensorTrack& before,
                          const Map::TSensorTrack& now, size_t reads) {
         if (newVisit(m, e, before)) {
-            if (e.visits >= 1) commitSpread(m, e);
+            if (e.visits >= 1 &&
+                now.travel - e.spreadTravel >= m.insertionOptions.spreadCommitTravel)
+                commitSpread(m, e);
             e.visits++;
             e.visitStartEstimate = e.estimate;
             e.visitStartSample = e.sample;

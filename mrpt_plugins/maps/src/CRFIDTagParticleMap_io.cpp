@@ -116,7 +116,8 @@ void writeEntries(CArchive& a,
         writePts(a, e->visitStartSample);
         a.WriteAs<uint64_t>(e->spreadPoses.size());
         for (const auto& q : e->spreadPoses) a << q.x << q.y << q.phi;
-        a << e->spreadOrigin.x << e->spreadOrigin.y << e->spreadOrigin.phi;
+        a << e->spreadOrigin.x << e->spreadOrigin.y << e->spreadOrigin.phi
+          << e->spreadTravel;
     }
 }
 
@@ -143,7 +144,8 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
                 throw std::runtime_error("CRFIDTagParticleMap: corrupt size");
             e.spreadPoses.resize(n);
             for (auto& q : e.spreadPoses) a >> q.x >> q.y >> q.phi;
-            a >> e.spreadOrigin.x >> e.spreadOrigin.y >> e.spreadOrigin.phi;
+            a >> e.spreadOrigin.x >> e.spreadOrigin.y >> e.spreadOrigin.phi >>
+                e.spreadTravel;
         }
         const std::string id = e.id;
         t.emplace(id, std::move(e));
@@ -174,6 +176,7 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out.WriteAs<uint8_t>(static_cast<uint8_t>(io.tagRobotPose));  // v2
     out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.robotLikelihood));
     out.WriteAs<uint64_t>(lo.robotLikelihoodK);
+    out << io.spreadCommitTravel;
     out << m_landmarkNames;
     out.WriteAs<uint64_t>(m_track[0].steps);
     out.WriteAs<uint64_t>(m_track[1].steps);
@@ -210,10 +213,12 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
             io.tagRobotPose = TTagRobotPose::Mean;
             lo.robotLikelihood = TRobotLikelihood::TagMean;
             lo.robotLikelihoodK = 12;
+            io.spreadCommitTravel = 0;
             if (version >= 2) {
                 io.tagRobotPose = static_cast<TTagRobotPose>(in.ReadAs<uint8_t>());
                 lo.robotLikelihood = static_cast<TRobotLikelihood>(in.ReadAs<uint8_t>());
                 lo.robotLikelihoodK = in.ReadAs<uint64_t>();
+                in >> io.spreadCommitTravel;
             }
             in >> m_landmarkNames;
             m_track[0] = m_track[1] = TSensorTrack();

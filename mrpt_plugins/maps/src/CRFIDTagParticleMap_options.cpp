@@ -25,9 +25,9 @@ const std::vector<std::string> kRobotLikNames = {"tag_mean", "tag_particles"};
 
 const std::vector<std::string>& CRFIDTagParticleMap::TInsertionOptions::allowedKeys() {
     static const std::vector<std::string> k = {
-        "estimator",        "num_particles", "lag",        "smoother_step_sigma",
-        "roughening_sigma", "ess_threshold", "resampling", "seed",
-        "tag_robot_pose"};
+        "estimator",        "num_particles",       "lag",        "smoother_step_sigma",
+        "roughening_sigma", "ess_threshold",       "resampling", "seed",
+        "tag_robot_pose",   "spread_commit_travel"};
     return k;
 }
 
@@ -54,6 +54,8 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
     seed = static_cast<uint64_t>(sd);
     tagRobotPose = static_cast<TTagRobotPose>(rfir::readIniEnum(
         c, s, "tag_robot_pose", kRobotPoseNames, static_cast<size_t>(tagRobotPose)));
+    spreadCommitTravel =
+        rfir::readIniDouble(c, s, "spread_commit_travel", spreadCommitTravel, 0.0, false);
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
@@ -67,7 +69,8 @@ void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) c
       << "resampling          = " << rfir::models::toString(resampling) << "\n"
       << "seed                = " << seed << "\n"
       << "tag_robot_pose      = " << kRobotPoseNames[static_cast<size_t>(tagRobotPose)]
-      << "\n";
+      << "\n"
+      << "spread_commit_travel = " << spreadCommitTravel << "\n";
 }
 
 const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowedKeys() {

@@ -90,6 +90,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
          * read (one per particle) and the robot mean they are relative to. */
         std::vector<mrpt::math::TPose2D> spreadPoses;
         mrpt::math::TPose2D spreadOrigin{0, 0, 0};
+        double spreadTravel = 0;    //!< RFID track travel (m) at the first read
         uint64_t detections = 0;    //!< number of (reader, tag) reads
         uint64_t visits = 0;        //!< number of visits (first pass = 1)
         uint64_t lastReadStep = 0;  //!< index (1-based) of the last observation read in
@@ -174,6 +175,11 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
             rfir::models::ResamplingScheme::Systematic;    //!< resampling
         uint64_t seed = 1;                                 //!< seed
         TTagRobotPose tagRobotPose = TTagRobotPose::Mean;  //!< tag_robot_pose
+        /** spread_commit_travel (m): samples_visit makes the spread permanent
+         * at the first new visit after this much robot path since the tag's
+         * first read (0: the second visit, which with a ring of readers can be
+         * the same pass, the tag crossing from one reader to the next). */
+        double spreadCommitTravel = 0;
 
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;

@@ -36,7 +36,7 @@ std::string header(const TOptions& o, const std::string& only) {
        << o.seeds << " seeds per row, " << o.sweepSeeds
        << " per point of the particle sweep). Every run: rfir-sim data "
           "(config_ini/sim_ir_*.ini), rfir-localize with config_ini/ir_localize.ini "
-          "(M = 1000, association against the estimate as the thesis unless stated), "
+          "(M = 1000, association against the estimate as the thesis, unless stated), "
           "scored with rfir_eval. Errors are mean (over seeds, of the per-run mean) and "
           "maximum (over all runs) of |dx|, |dy|, |dtheta| and the distance dr, as the "
           "thesis' tables. Thesis numbers are from a real robot; ours from the simulator "

@@ -140,3 +140,73 @@ double CRFIDTagParticleMap::internal_computeObservationLikelihood(
     }
     return sum;
 }
+
+bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
+                                            TRobotReads& out) const {
+    // The lookups and policy tests of internal_computeObservationLikelihood,
+    // done once: they do not depend on the robot pose.
+    out = TRobotReads();
+    out.det = rfir::models::DetectionLikelihood(likelihoodOptions.detection);
+    const bool particles =
+        likelihoodOptions.robotLikelihood == TRobotLikelihood::TagParticles;
+    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs)) {
+        size_t known = 0;
+        for (const auto& rd : o->readings)
+            for (const auto& id : rd.tags) {
+                const auto it = m_tags.find(id);
+                if (it == m_tags.end()) continue;
+                const TTagEntry& e = it->second;
+                const auto w = Impl::whichForRobot(*this, e, m_track[0]);
+                if (w != Impl::Which::None) {
+                    TRobotReads::TRead r;
+                    const bool cur = w == Impl::Which::Current;
+                    r.est = cur ? &e.estimate : &e.visitStartEstimate;
+                    r.sample = cur ? &e.sample : &e.visitStartSample;
+                    r.area = Impl::area(rd.reader);
+                    r.known = known;
+                    r.plainCurrent = cur && (!particles || e.sample.empty());
+                    out.reads.push_back(r);
+                }
+                known++;
+            }
+        return true;
+    }
+    if (const auto* b = dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs)) {
+        out.rangeBearing = true;
+        const auto& s = b->sensorLocationOnRobot;
+        out.sensorX = s.x();
+        out.sensorY = s.y();
+        out.sensorYaw = s.yaw();
+        for (const auto& z : b->sensedData) {
+            const auto it = m_landmarks.find(landmarkName(z.landmarkID));
+            if (it == m_landmarks.end()) continue;
+            TRobotReads::TRead r;
+            r.est = Impl::estimateForRobot(*this, it->second, m_track[1]);
+            if (!r.est) continue;
+            r.range = z.range;
+            r.yaw = z.yaw;
+            out.reads.push_back(r);
+        }
+        return true;
+    }
+    return false;
+}
+
+double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
+                                                    const mrpt::math::TPose2D& robot,
+                                                    const double* plainTerms) const {
+    // Same terms, same order of summation as internal_computeObservationLikelihood.
+    double sum = 0;
+    if (!r.rangeBearing) {
+        for (const auto& rd : r.reads)
+            sum += plainTerms && rd.plainCurrent
+                       ? plainTerms[rd.known]
+                       : Impl::robotReadLogLik(*this, *rd.est, *rd.sample, robot, rd.area,
+                                               r.det);
+        return sum;
+    }
+    const auto sensor = Impl::sensorPose(r.sensorX, r.sensorY, r.sensorYaw, robot);
+    for (const auto& rd : r.reads)
+        sum += Impl::rbLogLik(*this, *rd.est, sensor, rd.range, rd.yaw);
+    return sum;
+}

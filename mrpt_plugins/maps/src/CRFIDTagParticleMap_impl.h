@@ -205,12 +205,17 @@ struct CRFIDTagParticleMapImpl {
     static double robotReadLogLik(const Map& m, const Entry& e, Which w,
                                   const mrpt::math::TPose2D& robot, const ReaderArea& r,
                                   const rfir::models::DetectionLikelihood& det) {
-        const auto& smp = w == Which::Current ? e.sample : e.visitStartSample;
+        return robotReadLogLik(m, w == Which::Current ? e.estimate : e.visitStartEstimate,
+                               w == Which::Current ? e.sample : e.visitStartSample, robot,
+                               r, det);
+    }
+    static double robotReadLogLik(const Map& m, const PointEstimate& est,
+                                  const std::vector<mrpt::math::TPoint2D>& smp,
+                                  const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                                  const rfir::models::DetectionLikelihood& det) {
         if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles ||
-            smp.empty()) {
-            const auto& est = w == Which::Current ? e.estimate : e.visitStartEstimate;
+            smp.empty())
             return det.logLikelihood(robot, r, est.mean);
-        }
         double ll[64], best = -1e300;
         const size_t K = std::min<size_t>(smp.size(), 64);
         for (size_t k = 0; k < K; k++)
@@ -278,9 +283,13 @@ struct CRFIDTagParticleMapImpl {
     static mrpt::math::TPose2D sensorPose(const mrpt::obs::CObservationBearingRange& o,
                                           const mrpt::math::TPose2D& robot) {
         const auto& s = o.sensorLocationOnRobot;
+        return sensorPose(s.x(), s.y(), s.yaw(), robot);
+    }
+    static mrpt::math::TPose2D sensorPose(double sx, double sy, double syaw,
+                                          const mrpt::math::TPose2D& robot) {
         const double c = std::cos(robot.phi), sn = std::sin(robot.phi);
-        return {robot.x + c * s.x() - sn * s.y(), robot.y + sn * s.x() + c * s.y(),
-                mrpt::math::wrapToPi(robot.phi + s.yaw())};
+        return {robot.x + c * sx - sn * sy, robot.y + sn * sx + c * sy,
+                mrpt::math::wrapToPi(robot.phi + syaw)};
     }
 
     static void insertRB(Map& m, const mrpt::obs::CObservationBearingRange& o,

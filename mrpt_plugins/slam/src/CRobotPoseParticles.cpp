@@ -22,7 +22,20 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
                                        start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
     lastLL_.clear();
-    predicted_ = start;
+}
+
+void CRobotPoseParticles::setWeighing(const mrpt::maps::CMetricMap* map,
+                                      std::vector<mrpt::obs::CObservation::Ptr> obs) {
+    if (!map || obs.empty()) {
+        logLikelihood = nullptr;
+        return;
+    }
+    logLikelihood = [map, obs = std::move(obs)](size_t, const mrpt::poses::CPose2D& p) {
+        const mrpt::poses::CPose3D pose(p);
+        double ll = 0;
+        for (const auto& o : obs) ll += map->computeObservationLikelihood(*o, pose);
+        return ll;
+    };
 }
 
 mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
@@ -53,15 +66,12 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
             p.d = p.d + inc;
         }
     }
-    predicted_ = meanPose();
-    if (afterMotion) afterMotion(predicted_);
+    if (afterMotion) afterMotion();
     lastLL_.clear();
-    if (!map_ || obs_.empty()) return;
+    if (!logLikelihood) return;
     lastLL_.resize(m_particles.size());
     for (size_t i = 0; i < m_particles.size(); i++) {
-        const mrpt::poses::CPose3D pose(m_particles[i].d);
-        double ll = 0;
-        for (const auto& o : obs_) ll += map_->computeObservationLikelihood(*o, pose);
+        const double ll = logLikelihood(i, m_particles[i].d);
         if (!std::isfinite(ll))
             throw std::runtime_error(
                 "the landmark map returned a non-finite log-likelihood");

@@ -9,6 +9,7 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace rfir::slam {
@@ -44,9 +45,12 @@ double rbConsistencyLogLik(const mrpt::poses::CPose2D& sensor,
     return -0.5 * e2 / var;
 }
 
+/** Also leaves in `terms` (M rows of one column per known detection) each
+ * RFID detection's term, which the weighing reuses when nothing changed. */
 TConsistency checkConsistency(const CRFIDTagParticleMap& map,
                               const CRobotPoseParticles& pf,
-                              const std::vector<TDetection>& dets) {
+                              const std::vector<TDetection>& dets,
+                              std::vector<double>& terms) {
     TConsistency c;
     std::vector<const CRFIDTagParticleMap::TTagEntry*> known;
     for (const auto& d : dets) {
@@ -56,23 +60,30 @@ TConsistency checkConsistency(const CRFIDTagParticleMap& map,
         known.push_back(e);
         c.anchors.push_back({d, e->estimate.mean.x, e->estimate.mean.y});
     }
+    terms.clear();
     if (known.empty()) return c;
     const auto& rb = map.likelihoodOptions.rangeBearing;
+    const rfir::models::DetectionLikelihood det(map.likelihoodOptions.detection);
+    const size_t K = known.size();
+    terms.resize(pf.m_particles.size() * K);
     double best = -1e300;
-    for (const auto& p : pf.m_particles) {
+    for (size_t i = 0; i < pf.m_particles.size(); i++) {
+        const auto& p = pf.m_particles[i];
         const mrpt::math::TPose2D pose = p.d.asTPose();
         double ll = 0;
-        for (size_t k = 0; k < known.size(); k++) {
+        for (size_t k = 0; k < K; k++) {
             const TDetection& d = c.anchors[k].det;
-            if (d.kind == TDetection::Kind::RFID)
-                ll += map.detectionLogLikelihood(*known[k], pose,
-                                                 {d.a, d.b, d.halfX, d.halfY});
-            else
-                ll += rbConsistencyLogLik(p.d + d.sensor, *known[k], d, rb);
+            // = map.detectionLogLikelihood(*known[k], pose, area)
+            const double t = d.kind == TDetection::Kind::RFID
+                                 ? det.logLikelihood(pose, {d.a, d.b, d.halfX, d.halfY},
+                                                     known[k]->estimate.mean)
+                                 : rbConsistencyLogLik(p.d + d.sensor, *known[k], d, rb);
+            terms[i * K + k] = t;
+            ll += t;
         }
         best = std::max(best, ll);
     }
-    c.bestMeanLogLik = best / double(known.size());
+    c.bestMeanLogLik = best / double(K);
     return c;
 }
 
@@ -100,8 +111,18 @@ class CTagMapEngine : public CSlamEngine {
     size_t resets() const override { return kidnap_.resets(); }
 
   private:
-    void beforeWeighing(const std::vector<TDetection>& dets, bool literal,
-                        const mrpt::poses::CPose2D& predicted);
+    void beforeWeighing(const std::vector<TDetection>& dets, bool literal);
+    void resolveReads(bool reuseTerms);
+    /** Particle i's log-likelihood: the sum computeObservationLikelihood
+     * gives over obs_ (same terms, same order), from reads resolved once. */
+    double weigh(size_t i, const mrpt::poses::CPose2D& p) const {
+        // CPose3D(p) has x, y, yaw == p.x(), p.y(), p.phi() exactly.
+        const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
+        const double* t = termsWidth_ ? &terms_[i * termsWidth_] : nullptr;
+        double ll = 0;
+        for (const auto& r : reads_) ll += map_.robotReadsLogLikelihood(r, pose, t);
+        return ll;
+    }
     void insert(const mrpt::poses::CPose2D& at) {
         if (map_.usesRobotSamples()) drawRobotSamples();
         for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
@@ -128,28 +149,54 @@ class CTagMapEngine : public CSlamEngine {
     mrpt::random::CRandomGenerator rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     bool mapThisStep_ = true;
+    std::vector<CRFIDTagParticleMap::TRobotReads> reads_;
+    std::vector<double> terms_;  //!< kidnap check's per-particle terms
+    size_t termsWidth_ = 0;      //!< their columns; 0: not reusable
+    std::optional<mrpt::poses::CPose2D> predictedForInsert_;
     mrpt::poses::CPose2D pose_;
 };
 
-void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool literal,
-                                   const mrpt::poses::CPose2D& predicted) {
+void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool literal) {
     // With recovery off the per-particle consistency pass decides nothing
     // (the monitor ignores it): skip it, it costs a likelihood per particle.
-    const TConsistency c =
-        cfg_.kidnap.enabled ? checkConsistency(map_, pf_, dets) : TConsistency{};
+    const TConsistency c = cfg_.kidnap.enabled ? checkConsistency(map_, pf_, dets, terms_)
+                                               : (terms_.clear(), TConsistency{});
     const bool reset = kidnap_.update(c.bestMeanLogLik);
     // While the detections contradict every particle, the map is not updated
     // (it would be updated from a wrong pose).
     mapThisStep_ = !reset && !kidnap_.suspicious();
+    // The mean after motion, computed only if used and before any particle
+    // or weight changes.
+    std::optional<mrpt::poses::CPose2D> predicted;
+    const auto predictedMean = [&]() {
+        if (!predicted) predicted = pf_.meanPose();
+        return *predicted;
+    };
     if (reset) {
         const size_t M = pf_.m_particles.size();
         const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
         const auto poses =
-            resettingPoses(c.anchors, n, predicted.phi(), cfg_.kidnap, rng_);
+            resettingPoses(c.anchors, n, predictedMean().phi(), cfg_.kidnap, rng_);
         for (size_t k = 0; k < poses.size(); k++)
             pf_.replacePose(rng_.drawUniform32bit() % M, poses[k]);
     }
-    if (literal && mapThisStep_) insert(predicted);
+    const bool insertNow = literal && mapThisStep_;
+    if (insertNow) insert(predictedMean());
+    predictedForInsert_.reset();
+    if (!literal && mapThisStep_ && cfg_.slam.tag_update_pose == "predicted")
+        predictedForInsert_ = predictedMean();
+    // The kidnap terms are the weighing's own when neither the particles nor
+    // the map changed since.
+    resolveReads(!reset && !insertNow);
+}
+
+void CTagMapEngine::resolveReads(bool reuseTerms) {
+    reads_.assign(obs_.size(), {});
+    for (size_t j = 0; j < obs_.size(); j++)
+        if (map_.genericMapParams.enableObservationLikelihood)
+            map_.resolveRobotReads(*obs_[j], reads_[j]);
+    const size_t M = pf_.m_particles.size();
+    termsWidth_ = reuseTerms && M > 0 && !terms_.empty() ? terms_.size() / M : 0;
 }
 
 void CTagMapEngine::step(const TSlamInput& in) {
@@ -170,19 +217,22 @@ void CTagMapEngine::step(const TSlamInput& in) {
         return;
     }
     const bool literal = map_.updateTagsBeforeWeighing();
-    pf_.afterMotion = [&](const mrpt::poses::CPose2D& predicted) {
-        beforeWeighing(dets, literal, predicted);
-    };
-    pf_.setWeighing(&map_, obs_);
+    pf_.afterMotion = [&]() { beforeWeighing(dets, literal); };
+    pf_.logLikelihood = nullptr;
+    if (!obs_.empty())
+        pf_.logLikelihood = [this](size_t i, const mrpt::poses::CPose2D& p) {
+            return weigh(i, p);
+        };
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement)
         acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
     filter_.executeOn(pf_, &acts, nullptr);
     pf_.afterMotion = nullptr;
-    pf_.setWeighing(nullptr, {});
+    pf_.logLikelihood = nullptr;
+    reads_.clear();
     pose_ = pf_.meanPose();
     if (!literal && mapThisStep_)
-        insert(cfg_.slam.tag_update_pose == "predicted" ? pf_.predictedMean() : pose_);
+        insert(predictedForInsert_ ? *predictedForInsert_ : pose_);
 }
 
 std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {

@@ -133,6 +133,35 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     double detectionLogLikelihood(const TTagEntry& tag, const mrpt::math::TPose2D& robot,
                                   const rfir::models::ReaderArea& r) const;
 
+    /** The reads of one observation that weigh the robot (per robot_update
+     * policy), resolved against the map once per update: weighing M particles
+     * then costs only the likelihoods, not an ID lookup per particle and read.
+     * Valid while the map is not modified. */
+    struct TRobotReads {
+        struct TRead {
+            const rfir::models::PointEstimate* est = nullptr;
+            const std::vector<mrpt::math::TPoint2D>* sample = nullptr;  //!< RFID
+            rfir::models::ReaderArea area;                              //!< RFID
+            double range = 0, yaw = 0;                                  //!< range-bearing
+            /** RFID: index among this observation's reads of mapped tags. */
+            size_t known = 0;
+            /** RFID: the term is detectionLogLikelihood(tag, robot, area). */
+            bool plainCurrent = false;
+        };
+        bool rangeBearing = false;
+        double sensorX = 0, sensorY = 0, sensorYaw = 0;  //!< range-bearing
+        rfir::models::DetectionLikelihood det;
+        std::vector<TRead> reads;
+    };
+    /** Resolves `obs` (RFID or bearing-range; false for other kinds). */
+    bool resolveRobotReads(const mrpt::obs::CObservation& obs, TRobotReads& out) const;
+    /** The same sum as computeObservationLikelihood(obs, robot) for the
+     * resolved reads. `plainTerms` (optional, indexed by TRead::known) holds
+     * already computed detectionLogLikelihood values for this pose, reused for
+     * the reads marked plainCurrent. */
+    double robotReadsLogLikelihood(const TRobotReads& r, const mrpt::math::TPose2D& robot,
+                                   const double* plainTerms = nullptr) const;
+
     /** @name Instrumentation: tag entries touched (created or updated).
      * @{ */
     size_t lastInsertTouched() const { return m_lastTouched; }

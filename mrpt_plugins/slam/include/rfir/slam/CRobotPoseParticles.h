@@ -30,19 +30,17 @@ class CRobotPoseParticles
     /** The map and observations the next executeOn step weighs with (none:
      * motion only). The map must outlive the step. */
     void setWeighing(const mrpt::maps::CMetricMap* map,
-                     std::vector<mrpt::obs::CObservation::Ptr> obs) {
-        map_ = map;
-        obs_ = std::move(obs);
-    }
-    /** Called after the motion and before the weighing, with the predicted
-     * weighted mean: where the literal PF-SLAM order updates the tags. */
-    std::function<void(const mrpt::poses::CPose2D&)> afterMotion;
+                     std::vector<mrpt::obs::CObservation::Ptr> obs);
+    /** Log-likelihood of particle i at its moved pose, for the next executeOn
+     * step (empty: motion only); replaces setWeighing's map likelihood. */
+    std::function<double(size_t i, const mrpt::poses::CPose2D& pose)> logLikelihood;
+    /** Called after the motion and before the weighing: where the literal
+     * PF-SLAM order updates the tags. */
+    std::function<void()> afterMotion;
 
     mrpt::poses::CPose2D meanPose() const;
     /** Per-particle log-likelihoods of the last weighing (empty if none). */
     const std::vector<double>& lastLogLik() const { return lastLL_; }
-    /** Mean of the poses after motion, before weighing, in the last step. */
-    const mrpt::poses::CPose2D& predictedMean() const { return predicted_; }
 
     /** Replaces particle i's pose, giving it the current best weight (sensor
      * resetting). */
@@ -55,10 +53,7 @@ class CRobotPoseParticles
         const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o) override;
 
   private:
-    const mrpt::maps::CMetricMap* map_ = nullptr;
-    std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<double> lastLL_;
-    mrpt::poses::CPose2D predicted_;
 };
 
 }  // namespace rfir::slam

@@ -5,6 +5,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/random/RandomGenerators.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -51,6 +52,45 @@ void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
     for (const auto& q : m_particles) best = std::max(best, q.log_w);
     m_particles.at(i).d = p;
     m_particles.at(i).log_w = best;
+}
+
+double CRobotPoseParticles::getW(size_t i) const {
+    return m_particles.at(i).log_w;
+}
+
+void CRobotPoseParticles::setW(size_t i, double w) {
+    m_particles.at(i).log_w = w;
+}
+
+double CRobotPoseParticles::normalizeWeights(double* out_max_log_w) {
+    if (m_particles.empty()) return 0;
+    double minW = m_particles[0].log_w, maxW = minW;
+    for (const auto& p : m_particles) {
+        maxW = std::max<double>(maxW, p.log_w);
+        minW = std::min<double>(minW, p.log_w);
+    }
+    for (auto& p : m_particles) p.log_w -= maxW;
+    if (out_max_log_w) *out_max_log_w = maxW;
+    return std::exp(maxW - minW);
+}
+
+double CRobotPoseParticles::ESS() const {
+    double cum = 0, sumLinearWeights = 0;
+    for (const auto& p : m_particles) sumLinearWeights += std::exp(p.log_w);
+    for (const auto& p : m_particles) {
+        const double w = std::exp(p.log_w) / sumLinearWeights;
+        cum += w * w;
+    }
+    if (cum == 0) return 0;
+    return 1.0 / (m_particles.size() * cum);
+}
+
+void CRobotPoseParticles::performSubstitution(const std::vector<size_t>& indx) {
+    std::vector<size_t> sorted(indx);
+    std::sort(sorted.begin(), sorted.end());
+    CParticleList parts(sorted.size());
+    for (size_t i = 0; i < sorted.size(); i++) parts[i] = m_particles[sorted[i]];
+    m_particles = std::move(parts);
 }
 
 void CRobotPoseParticles::prediction_and_update_pfStandardProposal(

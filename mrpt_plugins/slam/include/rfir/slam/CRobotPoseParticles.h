@@ -46,6 +46,18 @@ class CRobotPoseParticles
      * resetting). */
     void replacePose(size_t i, const mrpt::poses::CPose2D& p);
 
+    /** @name CParticleFilterCapable, on m_particles directly: the same
+     * arithmetic as MRPT's CParticleFilterDataImpl, without its dynamic_cast
+     * per particle access.
+     * @{ */
+    double getW(size_t i) const override;
+    void setW(size_t i, double w) override;
+    size_t particlesCount() const override { return m_particles.size(); }
+    double normalizeWeights(double* out_max_log_w = nullptr) override;
+    double ESS() const override;
+    void performSubstitution(const std::vector<size_t>& indx) override;
+    /** @} */
+
   protected:
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,

@@ -158,8 +158,11 @@ TTarget realtime(const TBenchReport& r) {
     TTarget t;
     t.name = "20-minute 30 x 20 m run processed at least 500x faster than real time";
     const TRealtimeResult* x = nullptr;
+    // Judged at the stock M = 500 when that run exists, else at the largest M:
+    // a smaller M would make the target easier than what users run.
     for (const auto& rt : r.realtime)
-        if (rt.method == "ps" && (!x || rt.M < x->M)) x = &rt;
+        if (rt.method == "ps" && (!x || (x->M != 500 && (rt.M == 500 || rt.M > x->M))))
+            x = &rt;
     if (!x) {
         t.measured = false;
         t.detail = "no real-time run";

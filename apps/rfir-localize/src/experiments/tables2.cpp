@@ -178,7 +178,7 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
     // leg): what the start sweep does not show.
     md << "\nTracking when the first unique ID comes late, at the loop's second corner "
           "(12, 13, 14 absent), one loop, "
-       << opt.seeds << " seeds, default start:\n\n"
+       << opt.sweepSeeds << " seeds, default start:\n\n"
        << "| M | settled mean dr [mm] | settled max dr [mm] | tracked runs "
           "|\n|---|---|---|---|\n";
     for (int M :
@@ -187,7 +187,7 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
         sp.simSets = {"trajectory.laps=1", "trajectory.spots=0", "ir.failed=12,13,14"};
         sp.absentIds = {"12", "13", "14"};
         sp.locSets = {"localization.num_particles=" + std::to_string(M)};
-        const auto runs = runSeeds(s, sp, opt.seeds);
+        const auto runs = runSeeds(s, sp, opt.sweepSeeds);
         size_t tracked = 0;
         for (const auto& r : runs) tracked += r.settled && r.settled->mean_dist < 0.05;
         const auto a = aggregate(runs);

@@ -10,8 +10,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
+#include <sstream>
 
 namespace rfir::irexp {
 namespace fs = std::filesystem;
@@ -25,8 +27,12 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
 
 /** The simulated data set of (ini, sets, seed), written once. */
 std::string dataset(const TSession& s, const TRunSpec& spec, uint64_t seed) {
-    const std::string key =
-        spec.simIni + "|" + join(spec.simSets, ";") + "|" + std::to_string(seed);
+    // The INI's text is part of the key: an edited INI is simulated anew.
+    std::ifstream ini(s.configDir + "/" + spec.simIni);
+    std::stringstream text;
+    text << ini.rdbuf();
+    const std::string key = spec.simIni + "|" + text.str() + "|" +
+                            join(spec.simSets, ";") + "|" + std::to_string(seed);
     const std::string dir =
         s.workDir + "/data/" + std::to_string(std::hash<std::string>()(key));
     if (!fs::exists(dir + "/run.rawlog")) {

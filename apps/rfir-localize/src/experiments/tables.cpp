@@ -65,22 +65,61 @@ std::string figure(const TSession& s, const TOptions& opt, const TRunSpec& spec,
     return "![" + caption + "](" + opt.imgRel + "/" + name + ")\n\n*" + caption + "*\n\n";
 }
 
-std::string expConfigurations(const TSession& s, const TOptions& opt) {
-    progress(s, "configurations (table 5.2)");
+namespace {
+struct TRoom {
+    std::string name, mixed, unique;
+    std::vector<std::string> uniqueSets;
+};
+
+/** Table 5.2 in one room: the three configurations (and the per-particle
+ * association) at the spots, all of them and from 10 s after the start. */
+std::string roomSection(const TSession& s, const TOptions& opt, const TRoom& room) {
     const double tProp[8] = {22, 29, 0.06, 36, 69, 79, 0.23, 105};
     const double tUniq[8] = {30, 25, 0.04, 39, 87, 91, 0.10, 126};
     const double tOdo[8] = {94, 55, 0.03, 108, 161, 99, 0.08, 189};
+    TRunSpec mixed{room.mixed}, particle{room.mixed}, uniq{room.unique}, odo{room.mixed};
+    particle.locSets = {"MetricMap_irEmitterMap_00_likelihoodOpts.association=particle"};
+    uniq.simSets = room.uniqueSets;
+    odo.odometryOnly = true;
+    const auto aM = aggregate(runSeeds(s, mixed, opt.seeds));
+    const auto aP = aggregate(runSeeds(s, particle, opt.seeds));
+    const auto aU = aggregate(runSeeds(s, uniq, opt.seeds));
+    const auto aO = aggregate(runSeeds(s, odo, opt.seeds));
+    std::ostringstream md;
+    md << "### " << room.name << "\n\n"
+       << tableHeader("configuration")
+       << statsRow("unique + repeated IDs (thesis association)", aM.spots)
+       << statsRow("unique + repeated IDs (per-particle association)", aP.spots)
+       << statsRow("unique IDs only (same positions)", aU.spots)
+       << statsRow("odometry only", aO.spots)
+       << thesisRow("*thesis: proposed system*", tProp)
+       << thesisRow("*thesis: 11 unique IDs*", tUniq)
+       << thesisRow("*thesis: odometry*", tOdo)
+       << "\nOnly the spots from 10 s after the first unique ID (the start transient "
+          "left "
+          "out):\n\n"
+       << tableHeader("configuration")
+       << statsRow("unique + repeated IDs (thesis association)", aM.spotsSettled)
+       << statsRow("unique + repeated IDs (per-particle association)", aP.spotsSettled)
+       << statsRow("unique IDs only (same positions)", aU.spotsSettled)
+       << statsRow("odometry only", aO.spotsSettled) << "\n"
+       << "Whole path from the first unique ID (mean dr): unique + repeated "
+       << fmt(1000 * aM.path.mean_dist, 1) << " mm, unique only "
+       << fmt(1000 * aU.path.mean_dist, 1) << " mm, odometry "
+       << fmt(1000 * aO.path.mean_dist, 1) << " mm; first unique ID after "
+       << fmt(aM.meanStart, 1) << " s on average" << startNote(aM) << ".\n\n";
+    return md.str();
+}
+}  // namespace
+
+std::string expConfigurations(const TSession& s, const TOptions& opt) {
+    progress(s, "configurations (table 5.2)");
     std::ostringstream md;
     md << "## Emitter configurations at 70 marked spots (thesis 5.4.1-5.4.2, table "
           "5.2)\n\n"
        << "Loop x3 at 200 mm/s, 70 spots (1 s stop each), unknown start; errors at the "
-          "spots "
-          "(spots before the first unique ID are not scored), "
+          "spots (spots before the first unique ID are not scored), "
        << opt.seeds << " seeds (mean of the per-run means, max of the maxima).\n\n";
-    struct TRoom {
-        std::string name, mixed, unique;
-        std::vector<std::string> uniqueSets;
-    };
     const TRoom rooms[] = {
         {"Lattice room 3.2 x 2.4 m (20 repeated + 12 unique emitters, 16 IDs)",
          "sim_ir_loop.ini",
@@ -91,39 +130,7 @@ std::string expConfigurations(const TSession& s, const TOptions& opt) {
          "sim_ir_exp_strip.ini",
          "sim_ir_exp_strip.ini",
          {"ir.all_unique=true"}}};
-    for (const auto& room : rooms) {
-        TRunSpec mixed{room.mixed}, particle{room.mixed}, uniq{room.unique},
-            odo{room.mixed};
-        particle.locSets = {
-            "MetricMap_irEmitterMap_00_likelihoodOpts.association=particle"};
-        uniq.simSets = room.uniqueSets;
-        odo.odometryOnly = true;
-        const auto aM = aggregate(runSeeds(s, mixed, opt.seeds));
-        const auto aP = aggregate(runSeeds(s, particle, opt.seeds));
-        const auto aU = aggregate(runSeeds(s, uniq, opt.seeds));
-        const auto aO = aggregate(runSeeds(s, odo, opt.seeds));
-        md << "### " << room.name << "\n\n" << tableHeader("configuration");
-        md << statsRow("unique + repeated IDs (thesis association)", aM.spots)
-           << statsRow("unique + repeated IDs (per-particle association)", aP.spots)
-           << statsRow("unique IDs only (same positions)", aU.spots)
-           << statsRow("odometry only", aO.spots)
-           << thesisRow("*thesis: proposed system*", tProp)
-           << thesisRow("*thesis: 11 unique IDs*", tUniq)
-           << thesisRow("*thesis: odometry*", tOdo) << "\n"
-           << "Only the spots from 10 s after the first unique ID (the start transient "
-              "left out):\n\n"
-           << tableHeader("configuration")
-           << statsRow("unique + repeated IDs (thesis association)", aM.spotsSettled)
-           << statsRow("unique + repeated IDs (per-particle association)",
-                       aP.spotsSettled)
-           << statsRow("unique IDs only (same positions)", aU.spotsSettled)
-           << statsRow("odometry only", aO.spotsSettled) << "\n"
-           << "Whole path from the first unique ID (mean dr): unique + repeated "
-           << fmt(1000 * aM.path.mean_dist, 1) << " mm, unique only "
-           << fmt(1000 * aU.path.mean_dist, 1) << " mm, odometry "
-           << fmt(1000 * aO.path.mean_dist, 1) << " mm; first unique ID after "
-           << fmt(aM.meanStart, 1) << " s on average" << startNote(aM) << ".\n\n";
-    }
+    for (const auto& room : rooms) md << roomSection(s, opt, room);
     TRunSpec mixed{"sim_ir_loop.ini"}, odo{"sim_ir_loop.ini"},
         strip{"sim_ir_exp_strip.ini"};
     odo.odometryOnly = true;

@@ -131,6 +131,32 @@ std::string expAssociation(const TSession& s, const TOptions& opt) {
     return md.str() + "\n";
 }
 
+/** Tracking after a late first unique ID (no unique emitter on the first
+ * leg) against M: what the start sweep does not show. */
+static std::string lateUniqueTable(const TSession& s, const TOptions& opt) {
+    std::ostringstream md;
+    md << "\nTracking when the first unique ID comes late, at the loop's second corner "
+          "(12, 13, 14 absent), one loop, "
+       << opt.sweepSeeds << " seeds, default start:\n\n"
+       << "| M | settled mean dr [mm] | settled max dr [mm] | tracked runs "
+          "|\n|---|---|---|---|\n";
+    for (int M :
+         opt.quick ? std::vector<int>{500} : std::vector<int>{200, 500, 1000, 2000}) {
+        TRunSpec sp{"sim_ir_loop.ini"};
+        sp.simSets = {"trajectory.laps=1", "trajectory.spots=0", "ir.failed=12,13,14"};
+        sp.absentIds = {"12", "13", "14"};
+        sp.locSets = {"localization.num_particles=" + std::to_string(M)};
+        const auto runs = runSeeds(s, sp, opt.sweepSeeds);
+        size_t tracked = 0;
+        for (const auto& r : runs) tracked += r.settled && r.settled->mean_dist < 0.05;
+        const auto a = aggregate(runs);
+        md << "| " << M << " | " << fmt(1000 * a.settled.mean_dist, 0) << " | "
+           << fmt(1000 * a.settled.max_dist, 0) << " | " << tracked << "/" << runs.size()
+           << " |\n";
+    }
+    return md.str();
+}
+
 std::string expParticles(const TSession& s, const TOptions& opt) {
     progress(s, "particle count at the start");
     const std::vector<int> Ms = opt.quick ? std::vector<int>{50, 500}
@@ -174,27 +200,7 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
         }
         md << "\n";
     }
-    // Tracking after a late first unique ID (no unique emitter on the first
-    // leg): what the start sweep does not show.
-    md << "\nTracking when the first unique ID comes late, at the loop's second corner "
-          "(12, 13, 14 absent), one loop, "
-       << opt.sweepSeeds << " seeds, default start:\n\n"
-       << "| M | settled mean dr [mm] | settled max dr [mm] | tracked runs "
-          "|\n|---|---|---|---|\n";
-    for (int M :
-         opt.quick ? std::vector<int>{500} : std::vector<int>{200, 500, 1000, 2000}) {
-        TRunSpec sp{"sim_ir_loop.ini"};
-        sp.simSets = {"trajectory.laps=1", "trajectory.spots=0", "ir.failed=12,13,14"};
-        sp.absentIds = {"12", "13", "14"};
-        sp.locSets = {"localization.num_particles=" + std::to_string(M)};
-        const auto runs = runSeeds(s, sp, opt.sweepSeeds);
-        size_t tracked = 0;
-        for (const auto& r : runs) tracked += r.settled && r.settled->mean_dist < 0.05;
-        const auto a = aggregate(runs);
-        md << "| " << M << " | " << fmt(1000 * a.settled.mean_dist, 0) << " | "
-           << fmt(1000 * a.settled.max_dist, 0) << " | " << tracked << "/" << runs.size()
-           << " |\n";
-    }
+    md << lateUniqueTable(s, opt);
     rfir::eval::TLinePlot plot;
     plot.title = "Successful starts vs number of particles";
     plot.xLabel = "particles M";

@@ -5,6 +5,7 @@
 #include <rfir/eval/metrics.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_engine.h>
+#include <rfir/slam/slam_inputs.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -16,28 +17,8 @@
 #include <vector>
 
 namespace slam_test {
-/** The sim's steps as SLAM inputs: odometry increments between consecutive
- * absolute odometry poses, RFID and range-bearing observations. */
 inline std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out) {
-    std::vector<rfir::slam::TSlamInput> v;
-    std::optional<mrpt::poses::CPose2D> last;
-    for (const auto& s : out.steps) {
-        rfir::slam::TSlamInput in;
-        in.t = s.t;
-        if (s.odometry) {
-            if (last) in.odometryIncrement = *s.odometry - *last;
-            last = s.odometry;
-        }
-        for (const auto& o : s.obs) {
-            if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
-                in.rfid = r;
-            if (auto b =
-                    std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
-                in.rb = b;
-        }
-        v.push_back(in);
-    }
-    return v;
+    return rfir::slam::inputsFromSteps(out.steps);
 }
 
 /** The stock INI of `method`, with optional "section.key = value" edits. */

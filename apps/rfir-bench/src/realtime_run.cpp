@@ -3,6 +3,7 @@
 #include "bench.h"
 
 #include <rfir/sim/simulator.h>
+#include <rfir/slam/slam_inputs.h>
 
 #include <mrpt/random/RandomGenerators.h>
 
@@ -11,31 +12,11 @@
 
 namespace rfir::bench {
 namespace {
-std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out,
-                                             size_t& dets) {
-    std::vector<rfir::slam::TSlamInput> v;
-    std::optional<mrpt::poses::CPose2D> last;
-    dets = 0;
-    for (const auto& s : out.steps) {
-        rfir::slam::TSlamInput in;
-        in.t = s.t;
-        if (s.odometry) {
-            if (last) in.odometryIncrement = *s.odometry - *last;
-            last = s.odometry;
-        }
-        for (const auto& o : s.obs) {
-            if (auto r =
-                    std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o)) {
-                in.rfid = r;
-                dets += r->detectionCount();
-            }
-            if (auto b =
-                    std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
-                in.rb = b;
-        }
-        v.push_back(std::move(in));
-    }
-    return v;
+size_t countDetections(const std::vector<rfir::slam::TSlamInput>& inputs) {
+    size_t n = 0;
+    for (const auto& in : inputs)
+        if (in.rfid) n += in.rfid->detectionCount();
+    return n;
 }
 }  // namespace
 
@@ -50,8 +31,8 @@ std::vector<TRealtimeResult> runRealtime(
     const auto sim = rfir::sim::simulate(simCfg, o.seed);
     const double simulateSeconds =
         std::chrono::duration<double>(Clock::now() - t0).count();
-    size_t dets = 0;
-    const auto inputs = toInputs(sim, dets);
+    const auto inputs = rfir::slam::inputsFromSteps(sim.steps);
+    const size_t dets = countDetections(inputs);
     size_t tags = 0;
     for (const auto& e : sim.gtMap)
         if (e.kind == rfir::common::TMapEntry::Kind::Tag) tags++;

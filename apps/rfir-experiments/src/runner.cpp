@@ -3,6 +3,7 @@
 
 #include <rfir/eval/metrics.h>
 #include <rfir/slam/slam_engine.h>
+#include <rfir/slam/slam_inputs.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -43,29 +44,6 @@ rfir::slam::TSlamConfig slamConfig(const std::string& dir, const TMethodSpec& m,
     return rfir::slam::loadSlamConfig(ini, m.method);
 }
 
-/** The simulator's steps as the engines' inputs: odometry increments between
- * consecutive absolute odometry poses, and the RFID / range-bearing readings. */
-std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput& out) {
-    std::vector<rfir::slam::TSlamInput> v;
-    std::optional<mrpt::poses::CPose2D> last;
-    for (const auto& s : out.steps) {
-        rfir::slam::TSlamInput in;
-        in.t = s.t;
-        if (s.odometry) {
-            if (last) in.odometryIncrement = *s.odometry - *last;
-            last = s.odometry;
-        }
-        for (const auto& o : s.obs) {
-            if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
-                in.rfid = r;
-            if (auto b =
-                    std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(o))
-                in.rb = b;
-        }
-        v.push_back(std::move(in));
-    }
-    return v;
-}
 
 TMapEntry::Kind mapKind(const rfir::sim::TSimOutput& sim) {
     return sim.header.readers.empty() && sim.header.rbSensor ? TMapEntry::Kind::Landmark
@@ -125,7 +103,7 @@ TRunResult runMethod(const std::string& configDir, const TDataSet& data,
     mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
     auto engine = rfir::slam::makeEngine(cfg, data.sim.header);
     const auto run = rfir::slam::runEngine(*engine, data.sim.groundTruth.front().pose,
-                                           toInputs(data.sim));
+                                           rfir::slam::inputsFromSteps(data.sim.steps));
     TRunResult r;
     r.method = m.label;
     r.seed = seed;

@@ -2,9 +2,21 @@
  * thesis Algorithm 2). */
 #include <rfir/models/tag_fixed_lag_smoother.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace rfir::models {
+namespace {
+/** Scratch of update(), one set per thread: an update allocates nothing, and a
+ * tag does not keep a second copy of its histories (memory stays O(L N)). The
+ * resampled buffers are swapped in, the old ones become the next scratch. */
+struct TScratch {
+    std::vector<double> logW;
+    std::vector<mrpt::math::TPoint2D> pts, hist;
+};
+thread_local TScratch t_scratch;
+}  // namespace
+
 void TagFixedLagSmoother::initUniform(const mrpt::math::TPose2D& robot,
                                       const ReaderArea& r,
                                       mrpt::random::CRandomGenerator& rng) {
@@ -42,23 +54,25 @@ void TagFixedLagSmoother::update(const PointLogLikelihood& logLik,
                                  mrpt::random::CRandomGenerator& rng) {
     if (m_pts.empty()) throw std::logic_error("TagFixedLagSmoother::update before init");
     const size_t n = m_pts.size(), lag = m_p.lag;
-    std::vector<double> logW(n);
+    auto& sc = t_scratch;
+    sc.logW.resize(n);
     for (size_t j = 0; j < n; j++) {
         // Line 11: m_t = m_{t-1} + Gaussian random step (keeps diversity).
         m_pts[j].x += m_p.stepSigma * rng.drawGaussian1D_normalized();
         m_pts[j].y += m_p.stepSigma * rng.drawGaussian1D_normalized();
-        logW[j] = logLik(m_pts[j]);  // line 12
+        sc.logW[j] = logLik(m_pts[j]);  // line 12
     }
     pushStates();  // line 13
     // Lines 16-19: resample; whole histories travel with their particles.
-    const auto idx = resampleIndices(logW, n, m_p.resampling, rng);
-    std::vector<mrpt::math::TPoint2D> pts(n), hist(n * lag);
+    const auto idx = resampleIndices(sc.logW, n, m_p.resampling, rng);
+    sc.pts.resize(n);
+    sc.hist.resize(n * lag);
     for (size_t k = 0; k < n; k++) {
-        pts[k] = m_pts[idx[k]];
-        std::copy_n(m_hist.begin() + idx[k] * lag, lag, hist.begin() + k * lag);
+        sc.pts[k] = m_pts[idx[k]];
+        std::copy_n(m_hist.begin() + idx[k] * lag, lag, sc.hist.begin() + k * lag);
     }
-    m_pts = std::move(pts);
-    m_hist = std::move(hist);
+    m_pts.swap(sc.pts);
+    m_hist.swap(sc.hist);
     m_updates++;
     recomputeEstimate();  // lines 20-24
 }
@@ -75,15 +89,22 @@ void TagFixedLagSmoother::moveStates(
 
 std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::smoothedParticles() const {
     // Line 20: smoothed particle = mean of its stored states t+1-L .. t.
+    // Summed newest first: slots head-1 .. 0, then lag-1 down (the ring's
+    // wrap), without a modulo per term (this runs on every update).
     const size_t lag = m_p.lag;
     std::vector<mrpt::math::TPoint2D> out(m_pts.size(), {0, 0});
     if (m_count == 0) return out;
+    const size_t first = std::min(m_count, m_head), wrapped = m_count - first;
     for (size_t j = 0; j < m_pts.size(); j++) {
+        const mrpt::math::TPoint2D* row = m_hist.data() + j * lag;
         double sx = 0, sy = 0;
-        for (size_t k = 0; k < m_count; k++) {
-            const auto& s = m_hist[j * lag + (m_head + lag - 1 - k) % lag];
-            sx += s.x;
-            sy += s.y;
+        for (size_t k = 0; k < first; k++) {
+            sx += row[m_head - 1 - k].x;
+            sy += row[m_head - 1 - k].y;
+        }
+        for (size_t k = 0; k < wrapped; k++) {
+            sx += row[lag - 1 - k].x;
+            sy += row[lag - 1 - k].y;
         }
         out[j] = {sx / m_count, sy / m_count};
     }

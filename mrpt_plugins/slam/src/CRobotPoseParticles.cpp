@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace rfir::slam {
 void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
@@ -75,10 +76,14 @@ double CRobotPoseParticles::normalizeWeights(double* out_max_log_w) {
 }
 
 double CRobotPoseParticles::ESS() const {
+    // One exp per particle (not two): this runs on every step.
+    thread_local std::vector<double> lin;
+    lin.resize(m_particles.size());
     double cum = 0, sumLinearWeights = 0;
-    for (const auto& p : m_particles) sumLinearWeights += std::exp(p.log_w);
-    for (const auto& p : m_particles) {
-        const double w = std::exp(p.log_w) / sumLinearWeights;
+    for (size_t i = 0; i < lin.size(); i++)
+        sumLinearWeights += (lin[i] = std::exp(m_particles[i].log_w));
+    for (const double l : lin) {
+        const double w = l / sumLinearWeights;
         cum += w * w;
     }
     if (cum == 0) return 0;

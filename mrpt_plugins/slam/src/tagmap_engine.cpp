@@ -70,14 +70,16 @@ TConsistency checkConsistency(const CRFIDTagParticleMap& map,
     for (size_t i = 0; i < pf.m_particles.size(); i++) {
         const auto& p = pf.m_particles[i];
         const mrpt::math::TPose2D pose = p.d.asTPose();
+        const double cphi = std::cos(pose.phi), sphi = std::sin(pose.phi);
         double ll = 0;
         for (size_t k = 0; k < K; k++) {
             const TDetection& d = c.anchors[k].det;
             // = map.detectionLogLikelihood(*known[k], pose, area)
-            const double t = d.kind == TDetection::Kind::RFID
-                                 ? det.logLikelihood(pose, {d.a, d.b, d.halfX, d.halfY},
-                                                     known[k]->estimate.mean)
-                                 : rbConsistencyLogLik(p.d + d.sensor, *known[k], d, rb);
+            const double t =
+                d.kind == TDetection::Kind::RFID
+                    ? det.logLikelihood(pose, cphi, sphi, {d.a, d.b, d.halfX, d.halfY},
+                                        known[k]->estimate.mean)
+                    : rbConsistencyLogLik(p.d + d.sensor, *known[k], d, rb);
             terms[i * K + k] = t;
             ll += t;
         }

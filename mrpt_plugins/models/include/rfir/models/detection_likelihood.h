@@ -5,6 +5,8 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 
+#include <cmath>
+
 namespace rfir::models {
 /** One reader's detection rectangle in the robot frame: centre (x, y) and
  * half-sizes (halfX, halfY), axis-aligned with the robot (metres). */
@@ -40,7 +42,8 @@ double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy
 class DetectionLikelihood {
   public:
     DetectionLikelihood() = default;
-    explicit DetectionLikelihood(const DetectionModelParams& p) : m_p(p) {}
+    explicit DetectionLikelihood(const DetectionModelParams& p)
+        : m_p(p), m_logBeta(std::log(p.beta)) {}
 
     /** (ex, ey) in the robot frame, half-sizes of the detecting reader. */
     double logLikelihoodOffset(double ex, double ey, double hx, double hy) const;
@@ -48,6 +51,10 @@ class DetectionLikelihood {
      * of the PF-SLAM paper), offset rotated into the robot frame. */
     double logLikelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
                          const mrpt::math::TPoint2D& tag) const;
+    /** The same, given c = cos(robot.phi) and s = sin(robot.phi): a particle
+     * weighed against several reads computes them once. */
+    double logLikelihood(const mrpt::math::TPose2D& robot, double c, double s,
+                         const ReaderArea& r, const mrpt::math::TPoint2D& tag) const;
     double likelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
                       const mrpt::math::TPoint2D& tag) const;
 
@@ -55,6 +62,7 @@ class DetectionLikelihood {
 
   private:
     DetectionModelParams m_p;
+    double m_logBeta = std::log(DetectionModelParams().beta);  //!< hoisted from eq. 3.7
 };
 
 /** World position of a reader's centre for a robot pose (eq. 6 of 003). */

@@ -64,7 +64,19 @@ TEST(TagFixedLagSmoother, HistoriesTravelWithParticlesAndLagCaps) {
     p.lag = 4;
     TagFixedLagSmoother walk(p);
     walk.initFromPoints(std::vector<TPoint2D>(50, TPoint2D(0, 0)));
-    for (int k = 0; k < 6; k++) walk.update([](const TPoint2D&) { return 0.0; }, rng);
+    for (int k = 0; k < 6; k++) {
+        walk.update([](const TPoint2D&) { return 0.0; }, rng);
+        // At every fill level and ring position (head wraps at k = 2), the
+        // smoothed particle is the plain mean of the stored states.
+        const auto smk = walk.smoothedParticles();
+        for (size_t j = 0; j < 50; j++) {
+            const auto h = walk.history(j);
+            ASSERT_EQ(h.size(), std::min<size_t>(k + 2, 4));
+            double my = 0;
+            for (const auto& s : h) my += s.y;
+            EXPECT_NEAR(smk[j].y, my / double(h.size()), 1e-12);
+        }
+    }
     const auto sm = walk.smoothedParticles();
     for (size_t j = 0; j < 50; j++) {
         const auto h = walk.history(j);

@@ -1,4 +1,5 @@
 #include <rfir/slam/CFastSLAMParticles.h>
+#include <rfir/slam/motion_model.h>
 #include <rfir/slam/slam_options.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -79,14 +80,8 @@ double CFastSLAMParticles::updateParticle(TFastSLAMParticle& p,
 void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
-    if (auto mv = action ? action->getBestMovementEstimation() : nullptr) {
-        mv->prepareFastDrawSingleSamples();
-        mrpt::poses::CPose2D inc;
-        for (auto& p : m_particles) {
-            mv->fastDrawSingleSample(inc);
-            p.d.pose = p.d.pose + inc;
-        }
-    }
+    drawMotion(action, m_particles,
+               [](auto& p) -> mrpt::poses::CPose2D& { return p.d.pose; });
     lastMaxLogLik_ = 0;
     if (!detections_ || detections_->empty()) return;
     std::vector<size_t> idx;

@@ -1,4 +1,5 @@
 #include <rfir/slam/CRobotPoseParticles.h>
+#include <rfir/slam/motion_model.h>
 #include <rfir/slam/slam_options.h>
 
 #include <mrpt/obs/CActionCollection.h>
@@ -103,14 +104,7 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     // Motion model (SPEC section 3): one draw of the odometry increment's
     // Gaussian per particle.
-    if (auto mv = action ? action->getBestMovementEstimation() : nullptr) {
-        mv->prepareFastDrawSingleSamples();
-        mrpt::poses::CPose2D inc;
-        for (auto& p : m_particles) {
-            mv->fastDrawSingleSample(inc);
-            p.d = p.d + inc;
-        }
-    }
+    drawMotion(action, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; });
     if (afterMotion) afterMotion();
     lastLL_.clear();
     if (!logLikelihood) return;

@@ -40,4 +40,22 @@ mrpt::obs::CActionRobotMovement2D makeMovement(const mrpt::poses::CPose2D& incre
 std::optional<mrpt::poses::CPose2D> odometryIncrement(
     const mrpt::obs::CActionCollection* acts);
 
+/** The prediction both robot filters share: every particle's pose moves by
+ * its own draw of the action's odometry Gaussian (SPEC section 3). `poseOf(p)`
+ * returns a reference to particle p's CPose2D. Without a movement, nothing
+ * moves. */
+template <class Particles, class PoseOf>
+void drawMotion(const mrpt::obs::CActionCollection* action, Particles& particles,
+                PoseOf&& poseOf) {
+    const auto mv = action ? action->getBestMovementEstimation() : nullptr;
+    if (!mv) return;
+    mv->prepareFastDrawSingleSamples();
+    mrpt::poses::CPose2D inc;
+    for (auto& p : particles) {
+        mv->fastDrawSingleSample(inc);
+        mrpt::poses::CPose2D& pose = poseOf(p);
+        pose = pose + inc;
+    }
+}
+
 }  // namespace rfir::slam

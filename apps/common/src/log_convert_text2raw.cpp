@@ -2,6 +2,7 @@
  * line (and collects the range-bearing landmark names the header needs), the
  * second writes; a malformed log therefore leaves no output at all. */
 #include <rfir/common/log_convert.h>
+#include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
 
 #include <fstream>
@@ -10,26 +11,6 @@
 
 namespace rfir::common {
 namespace {
-/** Progress to a stream in 10 % steps, only for inputs over 1 MB. */
-class CProgress {
-  public:
-    CProgress(std::ostream* o, std::string what, uint64_t total)
-        : o_(total > (1u << 20) ? o : nullptr), what_(std::move(what)), total_(total) {}
-    void update(uint64_t done) {
-        if (!o_) return;
-        const unsigned pct = unsigned(std::min<uint64_t>(100, done * 100 / total_));
-        if (pct < next_) return;
-        *o_ << what_ << ": " << pct << " %" << std::endl;
-        next_ = pct / 10 * 10 + 10;
-    }
-
-  private:
-    std::ostream* o_;
-    std::string what_;
-    uint64_t total_;
-    unsigned next_ = 10;
-};
-
 /** Reads the text log line by line through a fresh parser. */
 template <class OnRecord>
 void forEachRecord(const std::string& path, const TConvertOptions& opts,
@@ -39,7 +20,8 @@ void forEachRecord(const std::string& path, const TConvertOptions& opts,
     f.seekg(0, std::ios::end);
     const auto size = uint64_t(f.tellg());
     f.seekg(0);
-    CProgress prog(opts.progress, what + " " + path, size);
+    // Progress only for inputs over 1 MB (bytes read of the file's size).
+    CProgress prog(what + " " + path, size, size > (1u << 20) ? opts.progress : nullptr);
     std::string line;
     size_t n = 0;
     uint64_t done = 0;
@@ -47,11 +29,12 @@ void forEachRecord(const std::string& path, const TConvertOptions& opts,
     while (std::getline(f, line)) {
         if (p.parseLine(line, ++n, rec)) onRecord(rec);
         done += line.size() + 1;
-        prog.update(done);
+        if (done) prog.update(done - 1);
     }
     if (f.bad()) throw std::runtime_error(path + ": read error");
     p.finish(n);
-    prog.update(size);
+    if (size) prog.update(size - 1);
+    prog.finish();
 }
 
 /** What the first pass learns. */

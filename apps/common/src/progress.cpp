@@ -9,10 +9,16 @@
 namespace rfir::common
 {
 CProgress::CProgress(std::string what, size_t total, bool enabled)
+    : CProgress(std::move(what), total, enabled ? &std::cerr : nullptr)
+{
+}
+
+CProgress::CProgress(std::string what, size_t total, std::ostream* out)
     : what_(std::move(what)),
       total_(std::max<size_t>(1, total)),
-      enabled_(enabled),
-      tty_(::isatty(STDERR_FILENO) != 0),
+      out_(out),
+      enabled_(out != nullptr),
+      tty_(out == &std::cerr && ::isatty(STDERR_FILENO) != 0),
       t0_(std::chrono::steady_clock::now())
 {
 }
@@ -33,12 +39,12 @@ void CProgress::update(size_t i)
     char buf[160];
     std::snprintf(buf, sizeof(buf), "%s: %3zu%% (%zu/%zu) %.1f s elapsed, ~%.1f s left",
                   what_.c_str(), pct, done, total_, s, eta);
-    std::cerr << (tty_ ? "\r" : "") << buf << (tty_ ? "" : "\n") << std::flush;
+    *out_ << (tty_ ? "\r" : "") << buf << (tty_ ? "" : "\n") << std::flush;
 }
 
 void CProgress::finish()
 {
-    if (enabled_ && tty_ && lastShown_ != size_t(-1)) std::cerr << "\n";
+    if (enabled_ && tty_ && lastShown_ != size_t(-1)) *out_ << "\n";
 }
 
 }  // namespace rfir::common

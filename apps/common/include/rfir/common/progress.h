@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <iosfwd>
 #include <string>
 
 namespace rfir::common
@@ -13,6 +14,9 @@ class CProgress
 public:
     /** `what` prefixes every line, e.g. "rfir-slam"; total is the step count. */
     CProgress(std::string what, size_t total, bool enabled = true);
+    /** The same to `out` (nullptr: silent); rewritten in place only when `out`
+     * is std::cerr on a terminal. */
+    CProgress(std::string what, size_t total, std::ostream* out);
     /** Call after step i (0-based) is done; prints only when the display changes. */
     void update(size_t i);
     /** Ends the line on a terminal. */
@@ -21,6 +25,7 @@ public:
 private:
     std::string what_;
     size_t total_, lastShown_ = size_t(-1);
+    std::ostream* out_;
     bool enabled_, tty_;
     std::chrono::steady_clock::time_point t0_;
 };

@@ -1,4 +1,5 @@
 /* rfir-sim: the time loop: true path (with kidnapping), odometry, sensors. */
+#include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
 #include <rfir/sim/simulator.h>
 
@@ -215,13 +216,15 @@ void writeOutputs(const TSimOutput& out, const std::string& dir, const std::stri
             }
         rfir::common::CRawlogWriter w(base + ".rawlog", header);
         const size_t n = out.steps.size();
+        rfir::common::CProgress prog("rfir-sim: writing " + base + ".rawlog", n,
+                                     n >= 1000 ? progress : nullptr);
         for (size_t k = 0; k < n; k++)
         {
             const auto& s = out.steps[k];
             if (s.odometry || !s.obs.empty()) w.writeStep(s.t, s.odometry, s.obs);
-            if (progress && n >= 1000 && (k + 1) % (n / 10) == 0)
-                *progress << "rfir-sim: wrote " << (k + 1) << "/" << n << " steps\n";
+            prog.update(k);
         }
+        prog.finish();
         w.close();
     }
     rfir::common::saveTUM(base + ".gt.tum", out.groundTruth);

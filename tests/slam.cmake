@@ -18,3 +18,8 @@ if(TARGET rfir_sim)
     SOURCES test_slam_experiments.cpp
     LIBS rfir_slam rfir_sim rfir_eval)
 endif()
+if(TARGET rfir_sim)
+  rfir_add_test(test_graph_smoother
+    SOURCES test_graph_smoother.cpp
+    LIBS rfir_slam rfir_sim rfir_eval)
+endif()

@@ -93,3 +93,27 @@ TEST(SlamApp, BadSettingsAreRefused) {
     EXPECT_NE(r.code, 0);
     EXPECT_FALSE(mrpt::system::directoryExists(d + "/o1"));
 }
+
+// --smooth: the smoothed outputs beside the filter's, one more table row; a
+// range-bearing rawlog is refused with a message (the smoother is RFID only).
+TEST(SlamApp, SmoothWritesItsOutputs) {
+    const std::string d = dataDir(), out = d + "/out_smooth";
+    const auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + out + " --smooth");
+    ASSERT_EQ(r.code, 0) << r.out;
+    for (const char* f : {"path.tum", "path_smoothed.tum", "map_smoothed.txt",
+                          "path_map_smoothed.png", "errors_smoothed.json"})
+        EXPECT_TRUE(mrpt::system::fileExists(out + "/" + f)) << f;
+    EXPECT_NE(r.out.find("pf smoothed"), std::string::npos) << r.out;
+    EXPECT_NE(slurp(out + "/map_smoothed.txt").find("tag "), std::string::npos);
+
+    const std::string rb = d + "/rb";
+    mrpt::system::createDirectory(rb);
+    auto cfg = rfir::sim::TSimConfig();
+    cfg.maxDuration = 10;
+    cfg.rfid.enabled = false;
+    cfg.rb.enabled = true;
+    rfir::sim::writeOutputs(rfir::sim::simulate(cfg, 2), rb, "run");
+    const auto r2 = run("--rawlog " + rb + "/run.rawlog --out-dir " + rb + "/o --smooth");
+    EXPECT_NE(r2.code, 0) << r2.out;
+    EXPECT_NE(r2.out.find("range-bearing"), std::string::npos) << r2.out;
+}

@@ -60,6 +60,12 @@ int main(int argc, char** argv) {
                                             false, "", "TUM", cmd);
         TCLAP::ValueArg<std::string> gtMap("", "gt-map", "ground-truth map", false, "",
                                            "FILE", cmd);
+        TCLAP::SwitchArg smooth(
+            "", "smooth",
+            "also smooth the run offline (odometry + RFID reads, from the filter's "
+            "output; beyond the seeds): path_smoothed.tum, map_smoothed.txt, "
+            "path_map_smoothed.png, errors_smoothed.json",
+            cmd, false);
         const auto args = foldStart(argc, argv);
         std::vector<const char*> av;
         for (const auto& s : args) av.push_back(s.c_str());
@@ -74,6 +80,7 @@ int main(int argc, char** argv) {
         if (gtPath.isSet()) a.gtPath = gtPath.getValue();
         if (gtMap.isSet()) a.gtMap = gtMap.getValue();
         a.seed = seed.getValue();
+        a.smooth = smooth.getValue();
         if (start.isSet()) a.start = parseStart(start.getValue());
         return rfir::slamapp::runSlamApp(a);
     } catch (const TCLAP::ArgException& e) {

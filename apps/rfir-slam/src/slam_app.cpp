@@ -1,5 +1,7 @@
 #include "slam_app.h"
 
+#include <rfir/slam/graph_smoother.h>
+
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/progress.h>
@@ -111,8 +113,12 @@ void findGroundTruth(TAppArgs& a) {
         a.gtMap = base + ".gt_map.txt";
 }
 
-void evaluate(const TAppArgs& a, const std::string& label, const TPath2D& est,
-              const TMapFile& estMap, rfir::eval::TMapFigure& fig) {
+/** Errors against the ground truth, if there is one (fig gets the truth). */
+std::optional<rfir::eval::TEvalResult> evaluate(const TAppArgs& a,
+                                                const std::string& label,
+                                                const TPath2D& est,
+                                                const TMapFile& estMap,
+                                                rfir::eval::TMapFigure& fig) {
     rfir::eval::TEvalResult r;
     r.label = label;
     if (a.gtPath) {
@@ -142,11 +148,53 @@ void evaluate(const TAppArgs& a, const std::string& label, const TPath2D& est,
         }
     } else if (a.gtMap)
         std::cerr << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
-    if (!r.robot) return;
-    std::cout << rfir::eval::formatErrorTable({r});
-    rfir::common::writeFileAtomically(a.outDir + "/errors.json", [&](std::ostream& o) {
-        o << rfir::eval::toJson(r) << "\n";
-    });
+    if (!r.robot) return std::nullopt;
+    return r;
+}
+
+void writeErrors(const std::string& file, const rfir::eval::TEvalResult& r) {
+    rfir::common::writeFileAtomically(
+        file, [&](std::ostream& o) { o << rfir::eval::toJson(r) << "\n"; });
+}
+
+/** --smooth: the offline refinement of the filter's run and its outputs. */
+std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
+                                                      const rfir::slam::TSlamConfig& cfg,
+                                                      const TLoaded& data,
+                                                      const mrpt::poses::CPose2D& start,
+                                                      const rfir::slam::TSlamRun& run) {
+    for (const auto& in : data.inputs)
+        if (in.rb)
+            throw std::runtime_error(
+                "--smooth: " + a.rawlog +
+                " has range-bearing observations; the smoother uses RFID reads only");
+    rfir::slam::TGraphSmootherParams p;
+    p.motion = cfg.motion;
+    std::vector<mrpt::poses::CPose2D> initial;
+    for (const auto& [t, q] : run.path) initial.push_back(q);
+    std::cerr << "rfir-slam: smoothing " << initial.size() << " poses offline\n";
+    const auto res = rfir::slam::smoothRun(data.inputs, start, initial, run.map, p);
+    std::cerr << "rfir-slam: smoothed in " << res.iterations << " iterations ("
+              << res.reads << " reads; cost " << res.initialCost << " -> "
+              << res.finalCost << ")\n";
+    rfir::slam::TSlamRun sm = run;
+    for (size_t k = 0; k < sm.path.size(); k++) sm.path[k].second = res.path[k];
+    sm.map = res.map;
+    const TPath2D path = toPath(sm);
+    const TMapFile map = toMap(sm.map);
+    rfir::common::saveTUM(a.outDir + "/path_smoothed.tum", path);
+    rfir::common::saveMapFile(
+        a.outDir + "/map_smoothed.txt", map,
+        "rfir-slam " + cfg.slam.method + " smoothed: <tag> <id> <x> <y> <sx> <sy>");
+    rfir::eval::TMapFigure fig;
+    fig.title = "rfir-slam " + cfg.slam.method +
+                " smoothed: " + mrpt::system::extractFileName(a.rawlog);
+    fig.estPath = path;
+    fig.estMap = map;
+    auto r = evaluate(a, cfg.slam.method + " smoothed", path, map, fig);
+    rfir::eval::plotMapFigure(a.outDir + "/path_map_smoothed.png", fig);
+    if (r) writeErrors(a.outDir + "/errors_smoothed.json", *r);
+    return r;
 }
 }  // namespace
 
@@ -199,8 +247,18 @@ int runSlamApp(const TAppArgs& args) {
         "rfir-slam " + cfg.slam.method + ": " + mrpt::system::extractFileName(a.rawlog);
     fig.estPath = path;
     fig.estMap = map;
-    evaluate(a, cfg.slam.method, path, map, fig);
+    const auto errs = evaluate(a, cfg.slam.method, path, map, fig);
     rfir::eval::plotMapFigure(a.outDir + "/path_map.png", fig);
+    if (errs) writeErrors(a.outDir + "/errors.json", *errs);
+    std::optional<rfir::eval::TEvalResult> smoothed;
+    if (a.smooth) smoothed = smoothAndWrite(a, cfg, data, start, run);
+    std::vector<rfir::eval::TEvalResult> rows;
+    if (errs) rows.push_back(*errs);
+    if (smoothed) {
+        smoothed->odometry.reset();  // the odometry row is printed once
+        rows.push_back(*smoothed);
+    }
+    if (!rows.empty()) std::cout << rfir::eval::formatErrorTable(rows);
     std::cerr << "rfir-slam: " << run.path.size() << " steps, " << map.size()
               << " landmarks, " << std::fixed << std::setprecision(2)
               << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir << "\n";

@@ -14,6 +14,8 @@ struct TAppArgs {
     std::optional<std::string> method, config, gtPath, gtMap;
     uint64_t seed = 1;
     std::optional<mrpt::poses::CPose2D> start;
+    /** Also refine the run offline (rfir::slam::smoothRun): *_smoothed outputs. */
+    bool smooth = false;
 };
 
 /** The stock INI of a method: <exe_dir>/../share/rfir/config_ini/slam_<m>.ini

@@ -157,6 +157,28 @@ void writeErrors(const std::string& file, const rfir::eval::TEvalResult& r) {
         file, [&](std::ostream& o) { o << rfir::eval::toJson(r) << "\n"; });
 }
 
+/** path<sfx>.tum, map<sfx>.txt, path_map<sfx>.png and errors<sfx>.json of a
+ * run, named `label` in the table, the figure and the map's header. */
+std::optional<rfir::eval::TEvalResult> writeAndScore(const TAppArgs& a,
+                                                     const rfir::slam::TSlamRun& run,
+                                                     const std::string& sfx,
+                                                     const std::string& label,
+                                                     const std::string& legend) {
+    const TPath2D path = toPath(run);
+    const TMapFile map = toMap(run.map);
+    rfir::common::saveTUM(a.outDir + "/path" + sfx + ".tum", path);
+    rfir::common::saveMapFile(a.outDir + "/map" + sfx + ".txt", map,
+                              "rfir-slam " + label + ": " + legend);
+    rfir::eval::TMapFigure fig;
+    fig.title = "rfir-slam " + label + ": " + mrpt::system::extractFileName(a.rawlog);
+    fig.estPath = path;
+    fig.estMap = map;
+    auto r = evaluate(a, label, path, map, fig);
+    rfir::eval::plotMapFigure(a.outDir + "/path_map" + sfx + ".png", fig);
+    if (r) writeErrors(a.outDir + "/errors" + sfx + ".json", *r);
+    return r;
+}
+
 /** --smooth: the offline refinement of the filter's run and its outputs. */
 std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
                                                       const rfir::slam::TSlamConfig& cfg,
@@ -180,21 +202,8 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
     rfir::slam::TSlamRun sm = run;
     for (size_t k = 0; k < sm.path.size(); k++) sm.path[k].second = res.path[k];
     sm.map = res.map;
-    const TPath2D path = toPath(sm);
-    const TMapFile map = toMap(sm.map);
-    rfir::common::saveTUM(a.outDir + "/path_smoothed.tum", path);
-    rfir::common::saveMapFile(
-        a.outDir + "/map_smoothed.txt", map,
-        "rfir-slam " + cfg.slam.method + " smoothed: <tag> <id> <x> <y> <sx> <sy>");
-    rfir::eval::TMapFigure fig;
-    fig.title = "rfir-slam " + cfg.slam.method +
-                " smoothed: " + mrpt::system::extractFileName(a.rawlog);
-    fig.estPath = path;
-    fig.estMap = map;
-    auto r = evaluate(a, cfg.slam.method + " smoothed", path, map, fig);
-    rfir::eval::plotMapFigure(a.outDir + "/path_map_smoothed.png", fig);
-    if (r) writeErrors(a.outDir + "/errors_smoothed.json", *r);
-    return r;
+    return writeAndScore(a, sm, "_smoothed", cfg.slam.method + " smoothed",
+                         "<tag> <id> <x> <y> <sx> <sy>");
 }
 }  // namespace
 
@@ -230,26 +239,15 @@ int runSlamApp(const TAppArgs& args) {
     if (!mrpt::system::directoryExists(a.outDir) &&
         !mrpt::system::createDirectory(a.outDir))
         throw std::runtime_error("cannot create output folder '" + a.outDir + "'");
-    const TPath2D path = toPath(run);
+    const auto errs = writeAndScore(a, run, "", cfg.slam.method,
+                                    "<tag or landmark> <id> <x> <y> <sx> <sy>");
     const TMapFile map = toMap(run.map);
-    rfir::common::saveTUM(a.outDir + "/path.tum", path);
-    rfir::common::saveMapFile(
-        a.outDir + "/map.txt", map,
-        "rfir-slam " + cfg.slam.method + ": <tag or landmark> <id> <x> <y> <sx> <sy>");
     const std::string settings = rfir::slam::dumpSlamConfig(cfg);
     rfir::common::writeFileAtomically(a.outDir + "/settings.ini",
                                       [&](std::ostream& o) { o << settings; });
     rfir::common::writeFileAtomically(a.outDir + "/stats.json", [&](std::ostream& o) {
         o << statsJson(cfg, run, map, a.seed);
     });
-    rfir::eval::TMapFigure fig;
-    fig.title =
-        "rfir-slam " + cfg.slam.method + ": " + mrpt::system::extractFileName(a.rawlog);
-    fig.estPath = path;
-    fig.estMap = map;
-    const auto errs = evaluate(a, cfg.slam.method, path, map, fig);
-    rfir::eval::plotMapFigure(a.outDir + "/path_map.png", fig);
-    if (errs) writeErrors(a.outDir + "/errors.json", *errs);
     std::optional<rfir::eval::TEvalResult> smoothed;
     if (a.smooth) smoothed = smoothAndWrite(a, cfg, data, start, run);
     std::vector<rfir::eval::TEvalResult> rows;

@@ -42,17 +42,9 @@ TSmoothed smoothAndScore(const rfir::sim::TSimOutput& sim, const TResult& filter
                 1e3 * std::hypot(path[k].x() - g.x(), path[k].y() - g.y()));
         }
     }
-    rfir::common::TMapFile m;
-    for (const auto& l : s.res.map) {
-        rfir::common::TMapEntry e;
-        e.id = l.id;
-        e.x = l.x;
-        e.y = l.y;
-        m.push_back(e);
-    }
-    s.tags =
-        rfir::eval::computeMapErrors(m, sim.gtMap, rfir::common::TMapEntry::Kind::Tag)
-            .stats.mean_dist;
+    s.tags = rfir::eval::computeMapErrors(toMapFile(s.res.map), sim.gtMap,
+                                          rfir::common::TMapEntry::Kind::Tag)
+                 .stats.mean_dist;
     return s;
 }
 }  // namespace

@@ -40,6 +40,21 @@ inline rfir::slam::TSlamConfig stockConfig(
     return rfir::slam::loadSlamConfig(f, method);
 }
 
+/** A run's landmarks as map-file entries, for rfir_eval. */
+inline rfir::common::TMapFile toMapFile(const std::vector<rfir::slam::TLandmarkOut>& lms) {
+    rfir::common::TMapFile m;
+    for (const auto& l : lms) {
+        rfir::common::TMapEntry e;
+        e.kind = l.isTag ? rfir::common::TMapEntry::Kind::Tag
+                         : rfir::common::TMapEntry::Kind::Landmark;
+        e.id = l.id;
+        e.x = l.x;
+        e.y = l.y;
+        m.push_back(e);
+    }
+    return m;
+}
+
 struct TResult {
     double robot = 0, tags = 0;  //!< mean distance errors, m
     size_t mapped = 0;
@@ -58,16 +73,7 @@ inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConf
     for (const auto& [t, p] : r.run.path) est.push_back({t, p});
     r.robotErrors = rfir::eval::computeRobotErrors(est, sim.groundTruth);
     r.robot = r.robotErrors.stats.mean_dist;
-    rfir::common::TMapFile m;
-    for (const auto& l : r.run.map) {
-        rfir::common::TMapEntry e;
-        e.kind = l.isTag ? rfir::common::TMapEntry::Kind::Tag
-                         : rfir::common::TMapEntry::Kind::Landmark;
-        e.id = l.id;
-        e.x = l.x;
-        e.y = l.y;
-        m.push_back(e);
-    }
+    const auto m = toMapFile(r.run.map);
     const auto kind = sim.header.rbSensor && !sim.header.readers.size()
                           ? rfir::common::TMapEntry::Kind::Landmark
                           : rfir::common::TMapEntry::Kind::Tag;

@@ -114,4 +114,20 @@ TMapFile loadMapFile(const std::string& path)
     return out;
 }
 
+TMapFile emitterEntries(const std::vector<rfir::ir::TEmitter>& emitters)
+{
+    TMapFile f;
+    for (const auto& e : emitters)
+    {
+        TMapEntry m;
+        m.kind = TMapEntry::Kind::Emitter;
+        m.id = e.id;
+        m.x = e.x;
+        m.y = e.y;
+        m.z = e.z;
+        f.push_back(m);
+    }
+    return f;
+}
+
 }  // namespace rfir::common

@@ -4,11 +4,10 @@
 #include "bench.h"
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/install_paths.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/filesystem.h>
-
-#include <unistd.h>
 
 #include <fstream>
 #include <iostream>
@@ -18,16 +17,8 @@
 namespace {
 using namespace rfir::bench;
 
-std::string exeDir() {
-    char buf[4096];
-    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
-    if (n <= 0) return ".";
-    buf[n] = 0;
-    return mrpt::system::extractFileDirectory(buf);
-}
-
 std::string defaultConfigDir() {
-    const std::string installed = exeDir() + "/../share/rfir/config_ini";
+    const std::string installed = rfir::common::stockConfigDir();
     if (mrpt::system::fileExists(installed + "/slam_ps.ini")) return installed;
     return std::string(RFIR_SOURCE_DIR) + "/config_ini";
 }

@@ -5,11 +5,11 @@
 #include "report.h"
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/install_paths.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/filesystem.h>
 
-#include <unistd.h>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -24,14 +24,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-std::string exeDir() {
-    char buf[4096];
-    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
-    if (n <= 0) return ".";
-    buf[n] = 0;
-    return mrpt::system::extractFileDirectory(buf);
 }
 
 std::vector<TRow> selectRows(const std::string& list, bool quick) {
@@ -133,7 +125,7 @@ int main(int argc, char** argv) {
             "", "config-dir",
             "folder of the sim_*.ini and "
             "slam_*.ini (default: the installed stock INIs)",
-            false, exeDir() + "/../share/rfir/config_ini", "DIR", cmd);
+            false, rfir::common::stockConfigDir(), "DIR", cmd);
         TCLAP::ValueArg<std::string> notes("", "notes", "markdown inserted in results.md",
                                            false, "", "FILE", cmd);
         TCLAP::ValueArg<std::string> revision("", "revision",

@@ -98,16 +98,7 @@ int cmdPlan(TArgs& a) {
     const auto r = planLattice(room, p);
     std::cout << formatPlanReport(r);
     if (a.out.isSet()) {
-        rfir::common::TMapFile f;
-        for (const auto& e : r.emitters) {
-            rfir::common::TMapEntry m;
-            m.kind = rfir::common::TMapEntry::Kind::Emitter;
-            m.id = e.id;
-            m.x = e.x;
-            m.y = e.y;
-            m.z = e.z;
-            f.push_back(m);
-        }
+        const auto f = rfir::common::emitterEntries(r.emitters);
         rfir::common::saveMapFile(a.out.getValue(), f,
                                   "rfir-ids plan --room \"" + a.room.getValue() +
                                       "\" --pitch " + std::to_string(p.pitch));

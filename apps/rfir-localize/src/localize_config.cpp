@@ -1,13 +1,12 @@
 /* rfir-localize: configuration. */
 #include "localize_config.h"
 
+#include <rfir/common/install_paths.h>
 #include <rfir/ir/ini_util.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
-
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -74,15 +73,7 @@ void applyOverrides(mrpt::config::CConfigFileBase& c,
 }
 
 std::string stockIniPath() {
-    char buf[4096];
-    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
-    if (n <= 0)
-        throw std::runtime_error("cannot find the program's folder (/proc/self/exe)");
-    buf[n] = 0;
-    const auto dir = std::filesystem::path(buf).parent_path();
-    return (dir / ".." / "share" / "rfir" / "config_ini" / "ir_localize.ini")
-        .lexically_normal()
-        .string();
+    return rfir::common::stockConfigDir() + "/ir_localize.ini";
 }
 
 void loadConfig(TConfig& cfg, const std::string& emitterOverride) {

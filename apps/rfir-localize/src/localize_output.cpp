@@ -111,15 +111,8 @@ void plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
     fig.gtPath = ev.gt;
     if (!res.path.empty()) fig.estPath = res.path;
     if (!cfg.odometryOnly) fig.odomPath = ev.odoAligned ? *ev.odoAligned : res.odometry;
-    for (const auto& e : cfg.map->emitters().emitters()) {
-        rfir::common::TMapEntry m;
-        m.kind = rfir::common::TMapEntry::Kind::Emitter;
-        m.id = e.id;
-        m.x = e.x;
-        m.y = e.y;
-        m.z = e.z;
-        fig.gtMap.push_back(m);
-    }
+    const auto em = rfir::common::emitterEntries(cfg.map->emitters().emitters());
+    fig.gtMap.insert(fig.gtMap.end(), em.begin(), em.end());
     rfir::eval::plotMapFigure(png, fig);
 }
 }  // namespace

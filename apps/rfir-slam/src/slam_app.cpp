@@ -1,5 +1,6 @@
 #include "slam_app.h"
 
+#include <rfir/common/install_paths.h>
 #include <rfir/slam/graph_smoother.h>
 
 #include <rfir/common/atomic_file.h>
@@ -15,8 +16,6 @@
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/filesystem.h>
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -28,14 +27,6 @@ using rfir::common::TMapFile;
 using rfir::common::TPath2D;
 
 namespace {
-std::string exeDir() {
-    char buf[4096];
-    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
-    if (n <= 0) return ".";
-    buf[n] = 0;
-    return mrpt::system::extractFileDirectory(buf);
-}
-
 std::string withoutRawlogExt(const std::string& p) {
     const std::string ext = ".rawlog";
     if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
@@ -211,7 +202,7 @@ std::string stockConfigPath(const std::string& method) {
     const std::string m = method == "fastslam" ? "fastslam"
                           : method == "ps"     ? "ps"
                                                : "pf";
-    return exeDir() + "/../share/rfir/config_ini/slam_" + m + ".ini";
+    return rfir::common::stockConfigDir() + "/slam_" + m + ".ini";
 }
 
 int runSlamApp(const TAppArgs& args) {

@@ -112,16 +112,7 @@ bool CIREmitterMap::internal_insertObservation(
 }
 
 void CIREmitterMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
-    rfir::common::TMapFile f;
-    for (const auto& e : m_emitters.emitters()) {
-        rfir::common::TMapEntry m;
-        m.kind = rfir::common::TMapEntry::Kind::Emitter;
-        m.id = e.id;
-        m.x = e.x;
-        m.y = e.y;
-        m.z = e.z;
-        f.push_back(m);
-    }
+    const auto f = rfir::common::emitterEntries(m_emitters.emitters());
     rfir::common::saveMapFile(prefix + "_emitters.txt", f, "CIREmitterMap");
 }
 

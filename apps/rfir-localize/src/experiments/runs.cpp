@@ -155,4 +155,8 @@ TAggregate aggregate(const std::vector<TRunMetrics>& runs) {
     return a;
 }
 
+void progress(const TSession& s, const std::string& what) {
+    if (s.verbose) std::cerr << "rfir-ir-experiments: " << what << "\n";
+}
+
 }  // namespace rfir::irexp

@@ -36,6 +36,9 @@ struct TSession {
     bool verbose = true;
 };
 
+/** One line on stderr naming the experiment being run (verbose sessions). */
+void progress(const TSession& s, const std::string& what);
+
 /** Simulates (once per spec and seed: cached in workDir), localizes through
  * the same code as rfir-localize, scores. `outDir` non-empty: also writes the
  * rfir-localize outputs there (path.tum, path.png, ...). */

@@ -43,10 +43,6 @@ std::string thesisRow(const std::string& label, const double v[8]) {
     return o.str();
 }
 
-void progress(const TSession& s, const std::string& what) {
-    if (s.verbose) std::cerr << "rfir-ir-experiments: " << what << "\n";
-}
-
 std::string startNote(const TAggregate& a) {
     return a.started == a.runs
                ? ""

@@ -12,10 +12,6 @@
 
 namespace rfir::irexp {
 namespace {
-void progress(const TSession& s, const std::string& what) {
-    if (s.verbose) std::cerr << "rfir-ir-experiments: " << what << "\n";
-}
-
 const std::string kAssoc = "MetricMap_irEmitterMap_00_likelihoodOpts.association=";
 const std::string kLik = "MetricMap_irEmitterMap_00_likelihoodOpts.";
 }  // namespace

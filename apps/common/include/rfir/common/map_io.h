@@ -2,6 +2,8 @@
  * `emitter <id> <x> <y> <z> [<sx> <sy>]`, `landmark <id> <x> <y> [<sx> <sy>]`. */
 #pragma once
 
+#include <rfir/obs/ir_lattice.h>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,5 +32,8 @@ void saveMapFile(const std::string& path, const TMapFile& m,
  * on a malformed line, an unknown record, a bad ID or a duplicate ID of one kind
  * (except repeated-ID emitters, IDs 1..9, which recur by design). */
 TMapFile loadMapFile(const std::string& path);
+
+/** `emitter` records of emitters (id, x, y, z), in their order. */
+TMapFile emitterEntries(const std::vector<rfir::ir::TEmitter>& emitters);
 
 }  // namespace rfir::common

@@ -23,26 +23,13 @@ TSmoothed smoothAndScore(const rfir::sim::TSimOutput& sim, const TResult& filter
                          const rfir::slam::TSlamConfig& cfg) {
     rfir::slam::TGraphSmootherParams p;
     p.motion = cfg.motion;
-    std::vector<mrpt::poses::CPose2D> path;
-    for (const auto& [t, q] : filtered.run.path) path.push_back(q);
     TSmoothed s;
-    s.res = rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose, path,
-                                  filtered.run.map, p);
+    s.res = rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose,
+                                  filtered.run, p);
     rfir::common::TPath2D est;
-    for (size_t k = 0; k < path.size(); k++)
-        est.push_back({filtered.run.path[k].first, s.res.path[k]});
+    for (const auto& [t, q] : s.res.run.path) est.push_back({t, q});
     s.robot = rfir::eval::computeRobotErrors(est, sim.groundTruth).stats.mean_dist;
-    if (std::getenv("SMOOTH_DUMP")) {
-        for (size_t k = 0; k < path.size(); k += path.size() / 12) {
-            const auto& g = sim.groundTruth[k].pose;
-            std::printf(
-                "  k %zu t %.1f err %.0f mm dphi %.3f | filt err %.0f\n", k, est[k].t,
-                1e3 * std::hypot(s.res.path[k].x() - g.x(), s.res.path[k].y() - g.y()),
-                mrpt::math::wrapToPi(s.res.path[k].phi() - g.phi()),
-                1e3 * std::hypot(path[k].x() - g.x(), path[k].y() - g.y()));
-        }
-    }
-    s.tags = rfir::eval::computeMapErrors(toMapFile(s.res.map), sim.gtMap,
+    s.tags = rfir::eval::computeMapErrors(toMapFile(s.res.run.map), sim.gtMap,
                                           rfir::common::TMapEntry::Kind::Tag)
                  .stats.mean_dist;
     return s;
@@ -56,29 +43,31 @@ TEST(GraphSmoother, RecoversTheTruthFromADriftedStart) {
     c.odometry.kXY = c.odometry.kPhiRot = c.odometry.kPhiXY = 0;
     c.maxDuration = 40;
     const auto sim = rfir::sim::simulate(c, 5);
-    std::vector<mrpt::poses::CPose2D> drifted;
+    rfir::slam::TSlamRun drifted;  // no map: tags start from their first read
     for (size_t k = 0; k < sim.groundTruth.size(); k++) {
         const auto& g = sim.groundTruth[k].pose;  // 0.3 rad and 0.5 m of drift at the end
         const double f = double(k) / double(sim.groundTruth.size());
-        drifted.emplace_back(g.x() + 0.5 * f, g.y() - 0.2 * f, g.phi() + 0.3 * f);
+        drifted.path.emplace_back(
+            sim.groundTruth[k].t,
+            mrpt::poses::CPose2D(g.x() + 0.5 * f, g.y() - 0.2 * f, g.phi() + 0.3 * f));
     }
     rfir::slam::TGraphSmootherParams p;
     p.motion = stockConfig("pf").motion;
-    const auto res = rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose,
-                                           drifted, {}, p);
-    ASSERT_EQ(res.path.size(), drifted.size());
+    const auto res =
+        rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose, drifted, p);
+    const auto& path = res.run.path;
+    ASSERT_EQ(path.size(), drifted.path.size());
     EXPECT_GT(res.reads, 100u);
     EXPECT_LT(res.finalCost, res.initialCost);
     double worst = 0;
-    for (size_t k = 0; k < res.path.size(); k++) {
-        const auto& g = sim.groundTruth[k].pose;
-        worst =
-            std::max(worst, std::hypot(res.path[k].x() - g.x(), res.path[k].y() - g.y()));
-        EXPECT_NEAR(mrpt::math::wrapToPi(res.path[k].phi() - g.phi()), 0.0, 0.002) << k;
+    for (size_t k = 0; k < path.size(); k++) {
+        const auto &g = sim.groundTruth[k].pose, &q = path[k].second;
+        worst = std::max(worst, std::hypot(q.x() - g.x(), q.y() - g.y()));
+        EXPECT_NEAR(mrpt::math::wrapToPi(q.phi() - g.phi()), 0.0, 0.002) << k;
     }
     EXPECT_LT(worst, 0.01);  // the Gaussian read model bends it by a few mm
-    ASSERT_FALSE(res.map.empty());
-    for (const auto& l : res.map) {
+    ASSERT_FALSE(res.run.map.empty());
+    for (const auto& l : res.run.map) {
         const auto* t = [&]() -> const rfir::common::TMapEntry* {
             for (const auto& e : sim.gtMap)
                 if (e.id == l.id) return &e;
@@ -97,9 +86,10 @@ TEST(GraphSmoother, RejectsAPathOfTheWrongLength) {
     auto c = setup60mmLoop(1);
     c.maxDuration = 2;
     const auto sim = rfir::sim::simulate(c, 1);
-    EXPECT_THROW(
-        rfir::slam::smoothRun(toInputs(sim), {}, {mrpt::poses::CPose2D()}, {}, {}),
-        std::invalid_argument);
+    rfir::slam::TSlamRun oneStep;
+    oneStep.path.emplace_back(0.0, mrpt::poses::CPose2D());
+    EXPECT_THROW(rfir::slam::smoothRun(toInputs(sim), {}, oneStep, {}),
+                 std::invalid_argument);
 }
 
 // Beyond the seeds: on the 60 mm loop (thesis table 3.1) the filters keep the

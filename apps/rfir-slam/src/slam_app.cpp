@@ -183,17 +183,12 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
                 " has range-bearing observations; the smoother uses RFID reads only");
     rfir::slam::TGraphSmootherParams p;
     p.motion = cfg.motion;
-    std::vector<mrpt::poses::CPose2D> initial;
-    for (const auto& [t, q] : run.path) initial.push_back(q);
-    std::cerr << "rfir-slam: smoothing " << initial.size() << " poses offline\n";
-    const auto res = rfir::slam::smoothRun(data.inputs, start, initial, run.map, p);
+    std::cerr << "rfir-slam: smoothing " << run.path.size() << " poses offline\n";
+    const auto res = rfir::slam::smoothRun(data.inputs, start, run, p);
     std::cerr << "rfir-slam: smoothed in " << res.iterations << " iterations ("
               << res.reads << " reads; cost " << res.initialCost << " -> "
               << res.finalCost << ")\n";
-    rfir::slam::TSlamRun sm = run;
-    for (size_t k = 0; k < sm.path.size(); k++) sm.path[k].second = res.path[k];
-    sm.map = res.map;
-    return writeAndScore(a, sm, "_smoothed", cfg.slam.method + " smoothed",
+    return writeAndScore(a, res.run, "_smoothed", cfg.slam.method + " smoothed",
                          "<tag> <id> <x> <y> <sx> <sy>");
 }
 }  // namespace

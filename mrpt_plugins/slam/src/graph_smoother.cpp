@@ -64,12 +64,14 @@ class CProblem {
     const std::vector<std::string>& tagIds() const { return tagIds_; }
     size_t reads() const { return reads_.size(); }
 
-    TState initial(const std::vector<mrpt::poses::CPose2D>& path,
+    TState initial(const std::vector<std::pair<double, mrpt::poses::CPose2D>>& path,
                    const std::vector<TLandmarkOut>& map) const {
         TState s;
         s.x.resize(dim());
-        for (size_t k = 0; k < K_; k++)
-            s.x.segment<3>(3 * k) << path[k].x(), path[k].y(), path[k].phi();
+        for (size_t k = 0; k < K_; k++) {
+            const auto& q = path[k].second;
+            s.x.segment<3>(3 * k) << q.x(), q.y(), q.phi();
+        }
         std::unordered_map<std::string, const TLandmarkOut*> known;
         for (const auto& l : map)
             if (l.isTag) known[l.id] = &l;
@@ -176,14 +178,14 @@ class CProblem {
 
 TGraphSmootherResult smoothRun(const std::vector<TSlamInput>& inputs,
                                const mrpt::poses::CPose2D& start,
-                               const std::vector<mrpt::poses::CPose2D>& initialPath,
-                               const std::vector<TLandmarkOut>& initialMap,
+                               const TSlamRun& filtered,
                                const TGraphSmootherParams& params) {
-    if (initialPath.size() != inputs.size())
+    if (filtered.path.size() != inputs.size())
         throw std::invalid_argument("smoothRun: the path needs one pose per input");
     const CProblem pb(inputs, start, params);
-    TState s = pb.initial(initialPath, initialMap);
+    TState s = pb.initial(filtered.path, filtered.map);
     TGraphSmootherResult res;
+    res.run = filtered;
     res.reads = pb.reads();
     const int n = int(pb.dim());
     double cost = pb.linearize(s, nullptr, nullptr), lambda = 1e-6;
@@ -218,9 +220,17 @@ TGraphSmootherResult smoothRun(const std::vector<TSlamInput>& inputs,
     }
     res.finalCost = cost;
     for (size_t k = 0; k < inputs.size(); k++)
-        res.path.emplace_back(s.x[3 * k], s.x[3 * k + 1],
-                              mrpt::math::wrapToPi(s.x[3 * k + 2]));
-    // Marginal stds of the tags: the tag diagonal of H^-1, one solve per column.
+        res.run.path[k].second = mrpt::poses::CPose2D(
+            s.x[3 * k], s.x[3 * k + 1], mrpt::math::wrapToPi(s.x[3 * k + 2]));
+    res.run.map.clear();
+    // Marginal stds of the tags: the tag diagonal of H^-1 at the final state
+    // (H above was linearised before the last accepted step), one solve per column.
+    {
+        std::vector<Eigen::Triplet<double>> trip;
+        Eigen::VectorXd g;
+        pb.linearize(s, &trip, &g);
+        H.setFromTriplets(trip.begin(), trip.end());
+    }
     solver.compute(H);
     for (size_t j = 0; j < pb.tagIds().size(); j++) {
         TLandmarkOut l;
@@ -235,7 +245,7 @@ TGraphSmootherResult smoothRun(const std::vector<TSlamInput>& inputs,
                 solver.info() == Eigen::Success ? solver.solve(e)[v + a] : 0;
             (a ? l.sy : l.sx) = std::sqrt(std::max(0.0, var));
         }
-        res.map.push_back(l);
+        res.run.map.push_back(l);
     }
     return res;
 }

@@ -27,22 +27,22 @@ struct TGraphSmootherParams {
 };
 
 struct TGraphSmootherResult {
-    std::vector<mrpt::poses::CPose2D> path;  //!< one pose per input
-    std::vector<TLandmarkOut> map;           //!< tags with marginal stds
-    double initialCost = 0, finalCost = 0;   //!< sum of squared whitened residuals
+    /** The filter's run with the smoothed poses (same times) and the smoothed
+     * tags (marginal stds); its timings are the filter's. */
+    TSlamRun run;
+    double initialCost = 0, finalCost = 0;  //!< sum of squared whitened residuals
     int iterations = 0;
     size_t reads = 0;  //!< RFID read factors used
 };
 
-/** Smooths `initialPath` (one pose per input, e.g. TSlamRun::path) and
- * `initialMap` over the inputs; `start` is held fixed (the known start pose).
+/** Smooths a filter's run (one pose per input, and its map) over the inputs;
+ * `start` is held fixed (the known start pose).
  * Tags read but absent from `initialMap` start from their first read. Range-
  * bearing detections are not used (RFID only). Throws std::invalid_argument
  * on size mismatches. */
 TGraphSmootherResult smoothRun(const std::vector<TSlamInput>& inputs,
                                const mrpt::poses::CPose2D& start,
-                               const std::vector<mrpt::poses::CPose2D>& initialPath,
-                               const std::vector<TLandmarkOut>& initialMap,
+                               const TSlamRun& filtered,
                                const TGraphSmootherParams& params);
 
 }  // namespace rfir::slam

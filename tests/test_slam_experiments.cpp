@@ -4,7 +4,8 @@
  *                    60mm_biased | 300mm_biased (odometry with systematic errors)
  *   SLAM_EXP_SEEDS = number of seeds                   (default 3)
  *   SLAM_EXP_METHODS = comma list of pf,ps,fastslam,odometry
- *   SLAM_EXP_EDITS = "section.key=value;..." applied to every method's INI */
+ *   SLAM_EXP_EDITS = "section.key=value;..." applied to every method's INI
+ *   SLAM_EXP_ODO_SCALE = factor on every odometry noise parameter of the setup */
 #include "test_slam_sim.h"
 
 #include <gtest/gtest.h>
@@ -91,7 +92,14 @@ TEST(SlamExperiments, DISABLED_Compare) {
         const auto eq = e.find('=');
         edits.emplace_back(e.substr(0, eq), e.substr(eq + 1));
     }
-    const auto simCfg = setup(setupName);
+    auto simCfg = setup(setupName);
+    // SLAM_EXP_ODO_SCALE: every odometry noise parameter scaled.
+    if (const double k = std::atof(env("SLAM_EXP_ODO_SCALE", "0").c_str()); k > 0) {
+        auto& o = simCfg.odometry;
+        for (double* v : {&o.kXY, &o.kPhiRot, &o.kPhiXY, &o.scaleSigma, &o.rotScaleSigma,
+                          &o.headingDriftSigma})
+            *v *= k;
+    }
     std::printf("setup %s, %d seeds, edits '%s'\n", setupName.c_str(), seeds,
                 env("SLAM_EXP_EDITS", "").c_str());
     std::vector<std::vector<double>> robot(methods.size()), tags(methods.size()),

@@ -9,7 +9,7 @@ if(TARGET rfir_sim)
   # End to end through the program (built by the same build).
   rfir_add_test(test_slam_app
     SOURCES test_slam_app.cpp
-    LIBS rfir_sim)
+    LIBS rfir_slam rfir_sim rfir_eval)
   add_dependencies(test_slam_app rfir-slam)
 endif()
 if(TARGET rfir_sim)

@@ -32,8 +32,8 @@ void print(const char* name, const TAgg& a) {
 // zero-mean model, level calibrated to the thesis's 108 mm odometry-only
 // error; docs/simulator.md) they are not met. Measured on the test's seeds
 // (robot / tags, mm): FastSLAM 80.7 / 105.2 beats
-// PF 84.8 / 105.2 and PS 86.8 / 112.1 (seeds 1-3); over seeds 1-12 PF 58.2 / 83.2,
-// FastSLAM 61.7 / 89.7, PS 64.4 / 90.0: the ordering is within the spread.
+// PF 84.8 / 105.2 and PS 91.6 / 115.0 (seeds 1-3); over seeds 1-12 PF 58.2 / 83.2,
+// FastSLAM 61.7 / 89.7, PS 65.1 / 89.0: the ordering is within the spread.
 // Why: docs/slam.md, "Known gaps" (per-tag filters cannot undo the first
 // lap's drift; FastSLAM's per-particle maps can).
 TEST(SlamAccuracy, DISABLED_Rfid300mmOrdering) {

@@ -1,6 +1,9 @@
 /* rfir-slam end to end: a short simulated rawlog through the program, every
  * output written, ground truth found beside the rawlog; bad settings refused
  * with the INI key named. */
+#include "test_slam_sim.h"
+
+#include <rfir/common/trajectory_io.h>
 #include <rfir/sim/simulator.h>
 
 #include <gtest/gtest.h>
@@ -33,14 +36,17 @@ std::string slurp(const std::string& f) {
     ss << in.rdbuf();
     return ss.str();
 }
+rfir::sim::TSimOutput simulated() {
+    auto cfg = rfir::sim::TSimConfig();
+    cfg.maxDuration = 30;
+    return rfir::sim::simulate(cfg, 2);
+}
 std::string dataDir() {
     static std::string dir;
     if (!dir.empty()) return dir;
     dir = mrpt::system::getTempFileName() + "_slamapp";
     mrpt::system::createDirectory(dir);
-    auto cfg = rfir::sim::TSimConfig();
-    cfg.maxDuration = 30;
-    rfir::sim::writeOutputs(rfir::sim::simulate(cfg, 2), dir, "run");
+    rfir::sim::writeOutputs(simulated(), dir, "run");
     return dir;
 }
 }  // namespace
@@ -63,6 +69,35 @@ TEST(SlamApp, WritesEveryOutput) {
                         " --seed 3 --config " + out + "/settings.ini");
     ASSERT_EQ(r2.code, 0) << r2.out;
     EXPECT_EQ(slurp(out + "/path.tum"), slurp(out2 + "/path.tum"));
+}
+
+// The program on the simulator's rawlog gives the run of the in-memory
+// simulation (what rfir-experiments scores), pose for pose: the rawlog adds
+// nothing, e.g. no motion noise drawn for the first odometry record.
+TEST(SlamApp, TheRawlogRunIsTheInMemoryRun) {
+    const std::string d = dataDir(), out = d + "/out_same";
+    for (const char* m : {"pf", "ps"}) {
+        const std::string ini =
+            std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + m + ".ini";
+        const auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + out +
+                           " --seed 5 --method " + m + " --config " + ini);
+        ASSERT_EQ(r.code, 0) << r.out;
+        const auto file = rfir::common::loadTUM(out + "/path.tum");
+        const auto sim = simulated();
+        auto cfg = slam_test::stockConfig(m);
+        cfg.seed = 5;
+        mrpt::random::getRandomGenerator().randomize(5);
+        auto engine = rfir::slam::makeEngine(cfg, sim.header);
+        const auto mem = rfir::slam::runEngine(*engine, *sim.header.startPose,
+                                               slam_test::toInputs(sim));
+        ASSERT_EQ(file.size(), mem.path.size()) << m;
+        for (size_t i = 0; i < file.size(); i++) {
+            ASSERT_NEAR(file[i].pose.x(), mem.path[i].second.x(), 1e-6)
+                << m << " pose " << i;
+            ASSERT_NEAR(file[i].pose.y(), mem.path[i].second.y(), 1e-6)
+                << m << " pose " << i;
+        }
+    }
 }
 
 TEST(SlamApp, EveryMethodWithItsStockIni) {

@@ -205,9 +205,13 @@ bool CRawlogReader::next(TRawlogStep& st)
         else if (auto i = std::dynamic_pointer_cast<rfir::obs::CObservationIRSignals>(o)) st.ir = i;
         else if (auto b = std::dynamic_pointer_cast<CObservationBearingRange>(o)) st.rb = b;
     }
+    // The writer gives the first odometry record a zero movement (it only
+    // anchors the frame); a filter would still draw motion noise for it.
+    const bool anchor = st.odometry && !sawOdometry_;
+    if (st.odometry) sawOdometry_ = true;
     if (auto mv = acts->getBestMovementEstimation())
     {
-        st.odometryIncrement = mv->rawOdometryIncrementReading;
+        if (!anchor) st.odometryIncrement = mv->rawOdometryIncrementReading;
         if (!haveT) st.t = mrpt::Clock::toDouble(mv->timestamp);
     }
     return true;

@@ -56,7 +56,9 @@ struct TRawlogStep
     mrpt::obs::CActionCollection::Ptr action;  //!< may hold no movement
     mrpt::obs::CSensoryFrame::Ptr sf;
     std::optional<mrpt::poses::CPose2D> odometry;  //!< absolute odometry pose
-    /** Odometry increment since the previous instant (nullopt: none given). */
+    /** Odometry increment since the previous instant (nullopt: none given, or
+     * the instant of the first absolute odometry record, which only anchors
+     * the odometry frame: the same inputs as rfir::slam::inputsFromSteps). */
     std::optional<mrpt::poses::CPose2D> odometryIncrement;
     rfir::obs::CObservationRFIDReaders::Ptr rfid;
     rfir::obs::CObservationIRSignals::Ptr ir;
@@ -82,6 +84,7 @@ private:
     std::string path_;
     mrpt::io::CFileGZInputStream in_;
     size_t entry_ = 0, steps_ = 0;
+    bool sawOdometry_ = false;  //!< an absolute odometry record was read
     rfir::obs::CObservationLogHeader::Ptr header_;
     std::optional<std::pair<mrpt::obs::CActionCollection::Ptr, mrpt::obs::CSensoryFrame::Ptr>>
         pending_;

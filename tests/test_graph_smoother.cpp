@@ -26,11 +26,11 @@ TSmoothed smoothAndScore(const rfir::sim::TSimOutput& sim, const TResult& filter
     TSmoothed s;
     s.res = rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose,
                                   filtered.run, p);
-    rfir::common::TPath2D est;
-    for (const auto& [t, q] : s.res.run.path) est.push_back({t, q});
-    s.robot = rfir::eval::computeRobotErrors(est, sim.groundTruth).stats.mean_dist;
-    s.tags = rfir::eval::computeMapErrors(toMapFile(s.res.run.map), sim.gtMap,
-                                          rfir::common::TMapEntry::Kind::Tag)
+    s.robot = rfir::eval::computeRobotErrors(rfir::common::stampedPath(s.res.run),
+                                             sim.groundTruth)
+                  .stats.mean_dist;
+    s.tags = rfir::eval::computeMapErrors(rfir::common::landmarkEntries(s.res.run.map),
+                                          sim.gtMap, rfir::common::TMapEntry::Kind::Tag)
                  .stats.mean_dist;
     return s;
 }

@@ -76,6 +76,7 @@ TEST(SlamApp, WritesEveryOutput) {
 // nothing, e.g. no motion noise drawn for the first odometry record.
 TEST(SlamApp, TheRawlogRunIsTheInMemoryRun) {
     const std::string d = dataDir(), out = d + "/out_same";
+    const auto sim = simulated();
     for (const char* m : {"pf", "ps"}) {
         const std::string ini =
             std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + m + ".ini";
@@ -83,7 +84,6 @@ TEST(SlamApp, TheRawlogRunIsTheInMemoryRun) {
                            " --seed 5 --method " + m + " --config " + ini);
         ASSERT_EQ(r.code, 0) << r.out;
         const auto file = rfir::common::loadTUM(out + "/path.tum");
-        const auto sim = simulated();
         auto cfg = slam_test::stockConfig(m);
         cfg.seed = 5;
         mrpt::random::getRandomGenerator().randomize(5);

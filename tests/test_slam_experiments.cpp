@@ -94,12 +94,8 @@ TEST(SlamExperiments, DISABLED_Compare) {
     }
     auto simCfg = setup(setupName);
     // SLAM_EXP_ODO_SCALE: every odometry noise parameter scaled.
-    if (const double k = std::atof(env("SLAM_EXP_ODO_SCALE", "0").c_str()); k > 0) {
-        auto& o = simCfg.odometry;
-        for (double* v : {&o.kXY, &o.kPhiRot, &o.kPhiXY, &o.scaleSigma, &o.rotScaleSigma,
-                          &o.headingDriftSigma})
-            *v *= k;
-    }
+    if (const double k = std::atof(env("SLAM_EXP_ODO_SCALE", "0").c_str()); k > 0)
+        simCfg.odometry.scale(k);
     std::printf("setup %s, %d seeds, edits '%s'\n", setupName.c_str(), seeds,
                 env("SLAM_EXP_EDITS", "").c_str());
     std::vector<std::vector<double>> robot(methods.size()), tags(methods.size()),

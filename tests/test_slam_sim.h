@@ -2,6 +2,7 @@
 // methods run with their stock INIs, errors from rfir_eval.
 #pragma once
 
+#include <rfir/common/slam_run.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_engine.h>
@@ -40,21 +41,6 @@ inline rfir::slam::TSlamConfig stockConfig(
     return rfir::slam::loadSlamConfig(f, method);
 }
 
-/** A run's landmarks as map-file entries, for rfir_eval. */
-inline rfir::common::TMapFile toMapFile(const std::vector<rfir::slam::TLandmarkOut>& lms) {
-    rfir::common::TMapFile m;
-    for (const auto& l : lms) {
-        rfir::common::TMapEntry e;
-        e.kind = l.isTag ? rfir::common::TMapEntry::Kind::Tag
-                         : rfir::common::TMapEntry::Kind::Landmark;
-        e.id = l.id;
-        e.x = l.x;
-        e.y = l.y;
-        m.push_back(e);
-    }
-    return m;
-}
-
 struct TResult {
     double robot = 0, tags = 0;  //!< mean distance errors, m
     size_t mapped = 0;
@@ -69,11 +55,10 @@ inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConf
     auto engine = rfir::slam::makeEngine(cfg, sim.header);
     TResult r;
     r.run = rfir::slam::runEngine(*engine, sim.groundTruth.front().pose, toInputs(sim));
-    rfir::common::TPath2D est;
-    for (const auto& [t, p] : r.run.path) est.push_back({t, p});
-    r.robotErrors = rfir::eval::computeRobotErrors(est, sim.groundTruth);
+    r.robotErrors =
+        rfir::eval::computeRobotErrors(rfir::common::stampedPath(r.run), sim.groundTruth);
     r.robot = r.robotErrors.stats.mean_dist;
-    const auto m = toMapFile(r.run.map);
+    const auto m = rfir::common::landmarkEntries(r.run.map);
     const auto kind = sim.header.rbSensor && !sim.header.readers.size()
                           ? rfir::common::TMapEntry::Kind::Landmark
                           : rfir::common::TMapEntry::Kind::Tag;

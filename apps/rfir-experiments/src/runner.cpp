@@ -1,6 +1,7 @@
 /* rfir-experiments: simulate, run a method, score it. */
 #include "runner.h"
 
+#include <rfir/common/slam_run.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/slam_inputs.h>
@@ -44,7 +45,6 @@ rfir::slam::TSlamConfig slamConfig(const std::string& dir, const TMethodSpec& m,
     return rfir::slam::loadSlamConfig(ini, m.method);
 }
 
-
 TMapEntry::Kind mapKind(const rfir::sim::TSimOutput& sim) {
     return sim.header.readers.empty() && sim.header.rbSensor ? TMapEntry::Kind::Landmark
                                                              : TMapEntry::Kind::Tag;
@@ -78,12 +78,7 @@ TDataSet simulateDataSet(const std::string& configDir, const TSubRun& run,
     ov.insert(ov.end(), point.simOverrides.begin(), point.simOverrides.end());
     TDataSet d;
     d.cfg = rfir::sim::loadSimConfig(configDir + "/" + run.simIni, ov);
-    if (point.odometryScale > 0) {
-        auto& o = d.cfg.odometry;
-        for (double* v : {&o.kXY, &o.kPhiRot, &o.kPhiXY, &o.scaleSigma, &o.rotScaleSigma,
-                          &o.headingDriftSigma})
-            *v *= point.odometryScale;
-    }
+    if (point.odometryScale > 0) d.cfg.odometry.scale(point.odometryScale);
     d.sim = rfir::sim::simulate(d.cfg, seed);
     if (!d.sim.header.readers.empty())
         d.passed = rfir::eval::tagsPassedOver(d.sim.gtMap, d.sim.groundTruth,
@@ -112,12 +107,8 @@ TRunResult runMethod(const std::string& configDir, const TDataSet& data,
     r.totalSeconds = run.totalTime;
     r.steps = run.path.size();
     r.resets = run.resets;
-    rfir::common::TPath2D est;
-    for (const auto& [t, p] : run.path) est.push_back({t, p});
-    rfir::common::TMapFile map;
-    for (const auto& l : run.map)
-        map.push_back({l.isTag ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark, l.id,
-                       l.x, l.y, 0, l.sx, l.sy, 0});
+    rfir::common::TPath2D est = rfir::common::stampedPath(run);
+    rfir::common::TMapFile map = rfir::common::landmarkEntries(run.map);
     r.eval.label = m.label;
     r.eval.robot = rfir::eval::computeRobotErrors(est, data.sim.groundTruth);
     r.eval.map = rfir::eval::computeMapErrors(map, data.sim.gtMap, mapKind(data.sim));

@@ -7,6 +7,7 @@
 #include <rfir/common/map_io.h>
 #include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
+#include <rfir/common/slam_run.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
@@ -58,31 +59,10 @@ TLoaded readInputs(const std::string& path) {
     return l;
 }
 
-TPath2D toPath(const rfir::slam::TSlamRun& run) {
-    TPath2D p;
-    for (const auto& [t, pose] : run.path) p.push_back({t, pose});
-    return p;
-}
-
-TMapFile toMap(const std::vector<rfir::slam::TLandmarkOut>& lms) {
-    TMapFile m;
-    for (const auto& l : lms) {
-        TMapEntry e;
-        e.kind = l.isTag ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark;
-        e.id = l.id;
-        e.x = l.x;
-        e.y = l.y;
-        e.sx = l.sx;
-        e.sy = l.sy;
-        m.push_back(e);
-    }
-    return m;
-}
-
 std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
-                      const TMapFile& map, uint64_t seed) {
+                      uint64_t seed) {
     size_t tags = 0, lms = 0;
-    for (const auto& e : map) (e.kind == TMapEntry::Kind::Tag ? tags : lms)++;
+    for (const auto& l : run.map) (l.isTag ? tags : lms)++;
     std::ostringstream o;
     o << std::setprecision(9) << "{\"method\": \"" << cfg.slam.method
       << "\", \"seed\": " << seed << ", \"steps\": " << run.path.size()
@@ -155,8 +135,8 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(const TAppArgs& a,
                                                      const std::string& sfx,
                                                      const std::string& label,
                                                      const std::string& legend) {
-    const TPath2D path = toPath(run);
-    const TMapFile map = toMap(run.map);
+    const TPath2D path = rfir::common::stampedPath(run);
+    const TMapFile map = rfir::common::landmarkEntries(run.map);
     rfir::common::saveTUM(a.outDir + "/path" + sfx + ".tum", path);
     rfir::common::saveMapFile(a.outDir + "/map" + sfx + ".txt", map,
                               "rfir-slam " + label + ": " + legend);
@@ -227,12 +207,11 @@ int runSlamApp(const TAppArgs& args) {
         throw std::runtime_error("cannot create output folder '" + a.outDir + "'");
     const auto errs = writeAndScore(a, run, "", cfg.slam.method,
                                     "<tag or landmark> <id> <x> <y> <sx> <sy>");
-    const TMapFile map = toMap(run.map);
     const std::string settings = rfir::slam::dumpSlamConfig(cfg);
     rfir::common::writeFileAtomically(a.outDir + "/settings.ini",
                                       [&](std::ostream& o) { o << settings; });
     rfir::common::writeFileAtomically(a.outDir + "/stats.json", [&](std::ostream& o) {
-        o << statsJson(cfg, run, map, a.seed);
+        o << statsJson(cfg, run, a.seed);
     });
     std::optional<rfir::eval::TEvalResult> smoothed;
     if (a.smooth) smoothed = smoothAndWrite(a, cfg, data, start, run);
@@ -243,7 +222,7 @@ int runSlamApp(const TAppArgs& args) {
         rows.push_back(*smoothed);
     }
     if (!rows.empty()) std::cout << rfir::eval::formatErrorTable(rows);
-    std::cerr << "rfir-slam: " << run.path.size() << " steps, " << map.size()
+    std::cerr << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()
               << " landmarks, " << std::fixed << std::setprecision(2)
               << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir << "\n";
     return 0;

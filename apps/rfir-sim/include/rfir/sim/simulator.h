@@ -101,6 +101,14 @@ struct TOdometryNoise
     double scaleSigma = 0.01;        //!< translation scale bias (fraction)
     double rotScaleSigma = 0.01;     //!< rotation scale bias (fraction)
     double headingDriftSigma = 0.005;  //!< rad per metre travelled
+
+    /** Every noise parameter times k (the odometry sweeps). */
+    void scale(double k)
+    {
+        for (double* v : {&kXY, &kPhiRot, &kPhiXY, &scaleSigma, &rotScaleSigma,
+                          &headingDriftSigma})
+            *v *= k;
+    }
 };
 
 /** Tag carpet ([rfid] section): a square grid of `density` tags/m^2 over the

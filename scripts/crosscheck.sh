@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Cross-check on an independent simulator: text logs written by
+# scripts/crosscheck/textlog_sim.py (not rfir-sim), imported with rfir-import,
+# run with the stock INIs of PF-SLAM, PS-SLAM and FastSLAM, scored with
+# rfir-eval (dead reckoning from the rawlog's odometry). Prints one markdown
+# row per scenario: mean robot / tag error in mm over the seeds.
+#
+#   bash scripts/crosscheck.sh [--seeds N] [--out DIR] [--config-dir DIR] [--scenarios a,b]
+# Needs python3 and a build (build/bin); RFIR_BUILD_DIR overrides the build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BIN=${RFIR_BUILD_DIR:-build}/bin
+SEEDS=3; OUT=out/crosscheck; CFGDIR=""; ONLY=""
+while [ $# -gt 0 ]; do
+  case $1 in
+    --seeds) SEEDS=$2; shift 2 ;;
+    --out) OUT=$2; shift 2 ;;
+    --config-dir) CFGDIR=$2; shift 2 ;;
+    --scenarios) ONLY=$2; shift 2 ;;
+    -h|--help) sed -n 2,9p "$0"; exit 0 ;;
+    *) echo "crosscheck.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
+  esac
+done
+command -v python3 >/dev/null || { echo "crosscheck.sh: needs python3 (apt-get install python3)" >&2; exit 1; }
+for p in rfir-import rfir-slam rfir-eval; do
+  [ -x "$BIN/$p" ] || { echo "crosscheck.sh: $BIN/$p missing: build first (bash scripts/demo.sh)" >&2; exit 1; }
+done
+declare -A SC=(
+  [loop60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150"
+  [async60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150 --async"
+  [epoch60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150 --t0 1700000000"
+  [rect4]="--layout grid4_rect --density 16 --path random --area 4x4 --duration 150"
+  [line100]="--layout line3 --density 100 --path random --area 3x3 --duration 150"
+  [rand300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 200"
+  [spin300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 200 --omega 0.3"
+  [big300]="--layout ring8_300 --density 4 --path random --area 30x20 --duration 200"
+  [kid60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 200 --kidnap 90"
+  [kid300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 200 --kidnap 100"
+)
+ORDER="loop60 async60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300"
+[ -n "$ONLY" ] && ORDER=${ONLY//,/ }
+mkdir -p "$OUT"
+echo "| scenario | PF-SLAM | PS-SLAM | FastSLAM | dead reckoning |"
+echo "| --- | --- | --- | --- | --- |"
+for sc in $ORDER; do
+  [ -n "${SC[$sc]:-}" ] || { echo "crosscheck.sh: unknown scenario '$sc'" >&2; exit 2; }
+  res="$OUT/$sc.results"; : > "$res"
+  for s in $(seq 1 "$SEEDS"); do
+    n="$OUT/${sc}_$s"
+    # shellcheck disable=SC2086
+    python3 scripts/crosscheck/textlog_sim.py --out "$n" --seed "$s" ${SC[$sc]} >/dev/null
+    "$BIN/rfir-import" -q --input "$n.txt" --output "$n.rawlog"
+    for m in pf ps fastslam; do
+      cfg=(); [ -n "$CFGDIR" ] && cfg=(--config "$CFGDIR/slam_$m.ini")
+      "$BIN/rfir-slam" --rawlog "$n.rawlog" --method "$m" "${cfg[@]}" --seed "$s" \
+        --out-dir "${n}_$m" > "${n}_$m.log" 2>&1
+      "$BIN/rfir-eval" --json-only --rawlog "$n.rawlog" --path "${n}_$m/path.tum" \
+        --gt-path "$n.gt.tum" --map "${n}_$m/map.txt" --gt-map "$n.gt_map.txt" \
+        | sed "s/^/$m /" >> "$res"
+    done
+  done
+  python3 - "$sc" "$res" <<'PY'
+import json, sys
+acc = {}
+for line in open(sys.argv[2]):
+    m, j = line.split(" ", 1)
+    d = json.loads(j)
+    acc.setdefault(m, []).append((d["robot"]["mean_dist"], d["tags"]["mean_dist"]))
+    if m == "pf":
+        acc.setdefault("dr", []).append((d["dead_reckoning"]["mean_dist"], None))
+def cell(k):
+    v = acc[k]; r = 1e3 * sum(a for a, _ in v) / len(v)
+    if v[0][1] is None: return "%.1f" % r
+    return "%.1f / %.1f" % (r, 1e3 * sum(b for _, b in v) / len(v))
+print("| %s | %s | %s | %s | %s |" % (sys.argv[1], cell("pf"), cell("ps"), cell("fastslam"), cell("dr")))
+PY
+done

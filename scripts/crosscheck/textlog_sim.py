@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""An RFID-floor simulator independent of rfir-sim, written from the text-log
+format alone (docs/import.md), as an outside user would: an omnidirectional
+robot, readers of any layout, a tag grid, odometry with a random-walk error,
+optional asynchronous reader polling, epoch timestamps and a kidnapping.
+Writes NAME.txt (textlog 1), NAME.gt.tum and NAME.gt_map.txt. Standard
+library only; see scripts/crosscheck.sh."""
+import argparse, math, random
+
+ap = argparse.ArgumentParser()
+ap.add_argument("--out", required=True, help="output prefix")
+ap.add_argument("--layout", default="ring8_60",
+                help="ring8_60 | ring8_300 | grid4_rect | line3 | single")
+ap.add_argument("--density", type=float, default=16, help="tags per m^2 (square grid)")
+ap.add_argument("--path", default="loop", help="loop | random | lawn")
+ap.add_argument("--area", default="3x3", help="floor W x H, m")
+ap.add_argument("--duration", type=float, default=120, help="s")
+ap.add_argument("--speed", type=float, default=0.2, help="m/s")
+ap.add_argument("--omega", type=float, default=0.0, help="spin while moving, rad/s")
+ap.add_argument("--sigma_xy", type=float, default=0.01, help="odometry, m per sqrt(m)")
+ap.add_argument("--sigma_phi", type=float, default=0.005, help="odometry, rad per sqrt(m)")
+ap.add_argument("--async", dest="async_", action="store_true",
+                help="odometry at 50 Hz, each reader polled at its own time")
+ap.add_argument("--t0", type=float, default=0.0, help="first timestamp, s")
+ap.add_argument("--kidnap", type=float, default=-1,
+                help="at this time the robot is carried 2 s (no records) to a random spot")
+ap.add_argument("--seed", type=int, default=1)
+ap.add_argument("--start", default="0.5,0.5,0")
+a = ap.parse_args()
+rng = random.Random(a.seed)
+W, H = (float(v) for v in a.area.split("x"))
+
+def layout(name):
+    if name == "ring8_60":
+        return [(f"R{i}", 0.15 * math.cos(i * math.pi / 4), 0.15 * math.sin(i * math.pi / 4), 0.03, 0.03) for i in range(8)]
+    if name == "ring8_300":
+        return [(f"R{i}", 0.4 * math.cos(i * math.pi / 4), 0.4 * math.sin(i * math.pi / 4), 0.15, 0.15) for i in range(8)]
+    if name == "grid4_rect":
+        return [(f"ant{i}", sx * 0.12, sy * 0.08, 0.06, 0.025) for i, (sx, sy) in enumerate([(1, 1), (1, -1), (-1, 1), (-1, -1)])]
+    if name == "line3":
+        return [(f"{i}", 0.1, (i - 1) * 0.1, 0.04, 0.04) for i in range(3)]
+    if name == "single":
+        return [("reader", 0.0, 0.0, 0.05, 0.05)]
+    raise SystemExit("layout?")
+
+readers = layout(a.layout)
+pitch = 1 / math.sqrt(a.density)
+tags = []
+n = 0
+y = pitch / 2
+while y < H:
+    x = pitch / 2
+    while x < W:
+        tags.append((f"E0040150{n:08X}", x, y))
+        n += 1
+        x += pitch
+    y += pitch
+cell = 0.5
+grid = {}
+for t in tags:
+    grid.setdefault((int(t[1] / cell), int(t[2] / cell)), []).append(t)
+
+def waypoints():
+    m = 0.5
+    if a.path == "loop":
+        pts = [(m, m), (W - m, m), (W - m, H - m), (m, H - m)]
+        while True:
+            for p in pts[1:] + pts[:1]:
+                yield p
+    elif a.path == "lawn":
+        k = 0
+        while True:
+            y = m + (k % int((H - 2 * m) / 0.5 + 1)) * 0.5
+            yield (W - m, y) if k % 2 == 0 else (m, y)
+            k += 1
+            yield (W - m, y) if k % 2 == 0 else (m, y)
+    else:
+        while True:
+            yield (rng.uniform(m, W - m), rng.uniform(m, H - m))
+
+if a.start:
+    x, y, th = (float(v) for v in a.start.split(","))
+else:
+    x, y, th = 0.5, 0.5, 0.0
+ox, oy, oth = 0.0, 0.0, 0.0  # odometry frame = start pose
+dt_odom = 0.02 if a.async_ else 0.1
+lines = ["format textlog 1", f"# foreign simulator seed {a.seed} layout {a.layout}"]
+for r in readers:
+    lines.append(f"reader {r[0]} {r[1]:.6f} {r[2]:.6f} {r[3]} {r[4]}")
+if a.start:
+    lines.append(f"start {x} {y} {th}")
+gt, wp = [], waypoints()
+goal = next(wp)
+t = 0.0
+kid_done = False
+
+def wrap(v):
+    while v > math.pi: v -= 2 * math.pi
+    while v <= -math.pi: v += 2 * math.pi
+    return v
+
+def reads(px, py, pth, r):
+    c, s = math.cos(pth), math.sin(pth)
+    rx, ry = px + c * r[1] - s * r[2], py + s * r[1] + c * r[2]
+    out = []
+    for i in range(int(rx / cell) - 1, int(rx / cell) + 2):
+        for j in range(int(ry / cell) - 1, int(ry / cell) + 2):
+            for tg in grid.get((i, j), []):
+                dx, dy = tg[1] - rx, tg[2] - ry
+                ex, ey = c * dx + s * dy, -s * dx + c * dy
+                if abs(ex) < r[3] and abs(ey) < r[4]:
+                    out.append(tg[0])
+    return out
+
+def fmt(v):
+    return f"{v:.6f}"
+
+step = 0
+while t <= a.duration + 1e-9:
+    T = a.t0 + t
+    gt.append((T, x, y, th))
+    lines.append(f"odom {T:.4f} {fmt(ox)} {fmt(oy)} {fmt(wrap(oth))}")
+    if not a.async_:
+        for r in readers:
+            ids = reads(x, y, th, r)
+            lines.append(f"rfid {T:.4f} {r[0]} " + " ".join(ids))
+    # move for dt_odom: omni robot heads to the goal in the world frame
+    dx, dy = goal[0] - x, goal[1] - y
+    d = math.hypot(dx, dy)
+    if d < 0.05:
+        goal = next(wp)
+        dx, dy = goal[0] - x, goal[1] - y
+        d = math.hypot(dx, dy)
+    stepl = min(a.speed * dt_odom, d)
+    wx, wy = dx / d * stepl, dy / d * stepl
+    c, s = math.cos(th), math.sin(th)
+    bx, by = c * wx + s * wy, -s * wx + c * wy  # body-frame increment
+    bth = a.omega * dt_odom
+    if a.async_:
+        # readers polled round robin between odom samples, each at its own t
+        for k, r in enumerate(readers):
+            tk = t + dt_odom * (k + 0.5) / len(readers)
+            f = (k + 0.5) / len(readers)
+            px, py, pth = x + wx * f, y + wy * f, th + bth * f
+            lines.append(f"rfid {a.t0 + tk:.4f} {r[0]} " + " ".join(reads(px, py, pth, r)))
+    x, y, th = x + wx, y + wy, wrap(th + bth)
+    # odometry: true increment plus random-walk noise
+    L = math.hypot(bx, by) + 0.1 * abs(bth)
+    nx = bx + rng.gauss(0, a.sigma_xy * math.sqrt(L))
+    ny = by + rng.gauss(0, a.sigma_xy * math.sqrt(L))
+    nth = bth + rng.gauss(0, a.sigma_phi * math.sqrt(L))
+    co, so = math.cos(oth), math.sin(oth)
+    ox, oy, oth = ox + co * nx - so * ny, oy + so * nx + co * ny, oth + nth
+    t += dt_odom
+    step += 1
+    if a.kidnap > 0 and not kid_done and t >= a.kidnap:
+        kid_done = True
+        # carried for 2 s: no odometry, no reads; put down elsewhere
+        t += 2.0
+        x, y, th = rng.uniform(0.5, W - 0.5), rng.uniform(0.5, H - 0.5), th
+        goal = next(wp)
+
+with open(a.out + ".txt", "w") as f:
+    f.write("\n".join(lines) + "\n")
+with open(a.out + ".gt.tum", "w") as f:
+    for T, px, py, pth in gt:
+        f.write(f"{T:.4f} {px:.6f} {py:.6f} 0 0 0 {math.sin(pth/2):.9f} {math.cos(pth/2):.9f}\n")
+with open(a.out + ".gt_map.txt", "w") as f:
+    for tg in tags:
+        f.write(f"tag {tg[0]} {tg[1]:.6f} {tg[2]:.6f}\n")
+print(f"{a.out}: {len(gt)} poses, {len(tags)} tags, {len(lines)} lines")

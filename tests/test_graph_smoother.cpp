@@ -125,9 +125,7 @@ TEST(GraphSmoother, DISABLED_Explore) {
         std::getenv("SMOOTH_SEEDS") ? std::atoi(std::getenv("SMOOTH_SEEDS")) : 4;
     for (uint64_t seed = 1; seed <= uint64_t(seeds); seed++) {
         auto simCfg = big ? setup300mm(150) : setup60mmLoop(3);
-        simCfg.odometry.kXY *= scale;
-        simCfg.odometry.kPhiRot *= scale;
-        simCfg.odometry.kPhiXY *= scale;
+        simCfg.odometry.scale(scale);  // every noise term, as SLAM_EXP_ODO_SCALE
         const auto sim = rfir::sim::simulate(simCfg, seed);
         for (const char* m : {"pf", "ps"}) {
             const auto cfg = stockConfig(m);

@@ -106,42 +106,70 @@ TEST(SlamDeterminism, SameSeedSamePath) {
     }
 }
 
+namespace {
+rfir::sim::TSimConfig kidnapSetup() {
+    auto c = setup60mmLoop(2);
+    c.kidnap.enabled = true;
+    c.kidnap.time = 70;
+    c.kidnap.toTime = 25;
+    c.kidnap.carryTime = 2;
+    return c;
+}
+/** Mean robot error from 15 s after the robot is put down. */
+double afterKidnap(const TResult& r, const rfir::sim::TSimConfig& c) {
+    std::vector<double> e;
+    for (const auto& pe : r.robotErrors.perPose)
+        if (pe.t > c.kidnap.time + c.kidnap.carryTime + 15) e.push_back(pe.dist);
+    return mean(e);
+}
+}  // namespace
+
 // Thesis 3.4.3: the robot is carried, without odometry, to a place mapped
-// earlier; PF-SLAM must recover: from 15 s after it is put down, its error is
-// back at the level of the same loop driven without the kidnapping (seeds
-// 1-3; one seed's error varies by tens of mm with any setting). Without
-// sensor resetting it must not recover (so the scenario is a real kidnapping).
+// earlier; PF-SLAM must recover. Without sensor resetting it must not (so
+// that the scenario is a real kidnapping). The 50 mm bound was set on this
+// one seed with revisit_min_travel = 0, the stock value until 67a240f, and is
+// kept with it: with the stock 1 m this seed's whole map is worse (66 mm
+// after, the not-kidnapped loop errs more too), which is not the recovery;
+// the stock settings' recovery is PFRecoversWithStockSettings below.
 TEST(SlamKidnap, PFRecovers) {
-    auto normalCfg = setup60mmLoop(2);
-    auto simCfg = normalCfg;
-    simCfg.kidnap.enabled = true;
-    simCfg.kidnap.time = 70;
-    simCfg.kidnap.toTime = 25;
-    simCfg.kidnap.carryTime = 2;
-    const double t0 = simCfg.kidnap.time + simCfg.kidnap.carryTime + 15;
-    auto after = [&](const TResult& r) {
-        std::vector<double> e;
-        for (const auto& pe : r.robotErrors.perPose)
-            if (pe.t > t0) e.push_back(pe.dist);
-        return mean(e);
-    };
-    std::vector<double> with, without, normal;
-    size_t resets = 0;
+    const auto simCfg = kidnapSetup();
+    const auto sim = rfir::sim::simulate(simCfg, 3);
+    const std::vector<std::pair<std::string, std::string>> travel0 = {
+        {"tagmap_likelihood.revisit_min_travel", "0"}};
+    auto noReset = travel0;
+    noReset.emplace_back("kidnap.enabled", "false");
+    const auto with = runMethod(sim, stockConfig("pf", travel0), 3);
+    const auto without = runMethod(sim, stockConfig("pf", noReset), 3);
+    std::printf("after kidnapping: with resetting %.1f mm (%zu resets), without %.1f mm\n",
+                1e3 * afterKidnap(with, simCfg), with.run.resets,
+                1e3 * afterKidnap(without, simCfg));
+    EXPECT_GE(with.run.resets, 1u);
+    EXPECT_LT(afterKidnap(with, simCfg), 0.050);
+    EXPECT_GT(afterKidnap(without, simCfg), 0.200);
+}
+
+// The stock INI (seeds 1-3): every seed resets and loses the robot without
+// resetting; from 15 s after the put-down the error is no worse than the
+// same loop driven without the kidnapping.
+TEST(SlamKidnap, PFRecoversWithStockSettings) {
+    const auto simCfg = kidnapSetup();
+    auto normalCfg = simCfg;
+    normalCfg.kidnap.enabled = false;
+    std::vector<double> with, normal;
     for (uint64_t seed = 1; seed <= 3; seed++) {
         const auto sim = rfir::sim::simulate(simCfg, seed);
         const auto r = runMethod(sim, stockConfig("pf"), seed);
-        resets += r.run.resets;
-        with.push_back(after(r));
-        without.push_back(
-            after(runMethod(sim, stockConfig("pf", {{"kidnap.enabled", "false"}}), seed)));
-        normal.push_back(
-            after(runMethod(rfir::sim::simulate(normalCfg, seed), stockConfig("pf"), seed)));
+        const auto nr = runMethod(sim, stockConfig("pf", {{"kidnap.enabled", "false"}}), seed);
+        const auto n =
+            runMethod(rfir::sim::simulate(normalCfg, seed), stockConfig("pf"), seed);
+        with.push_back(afterKidnap(r, simCfg));
+        normal.push_back(afterKidnap(n, simCfg));
+        std::printf("seed %d: after the kidnapping %.1f mm (%zu resets), without "
+                    "resetting %.1f mm; not kidnapped %.1f mm\n",
+                    int(seed), 1e3 * with.back(), r.run.resets,
+                    1e3 * afterKidnap(nr, simCfg), 1e3 * normal.back());
+        EXPECT_GE(r.run.resets, 1u) << "seed " << seed;
+        EXPECT_GT(afterKidnap(nr, simCfg), 0.200) << "seed " << seed;
     }
-    std::printf(
-        "after the kidnapping: with resetting %.1f mm (%zu resets), without %.1f mm; "
-        "not kidnapped %.1f mm\n",
-        1e3 * mean(with), resets, 1e3 * mean(without), 1e3 * mean(normal));
-    EXPECT_GE(resets, 3u);
-    EXPECT_LT(mean(with), 1.25 * mean(normal));
-    EXPECT_GT(mean(without), 0.200);
+    EXPECT_LE(mean(with), mean(normal));
 }

@@ -104,6 +104,7 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey) {
         {"likelihoodOpts", "beta = 0", "beta"},
         {"likelihoodOpts", "revisit_min_gap = 0", "revisit_min_gap"},
         {"likelihoodOpts", "revisit_min_travel = -0.1", "revisit_min_travel"},
+        {"likelihoodOpts", "robot_likelihood_k = 65", "robot_likelihood_k"},
         {"likelihoodOpts", "robotupdate = literal", "robotupdate"},
         {"insertOpts", "tag_robot_pose = median", "tag_robot_pose"},
         {"insertOpts", "spread_commit_travel = -1", "spread_commit_travel"},

@@ -111,40 +111,18 @@ bool CRFIDTagParticleMap::internal_canComputeObservationLikelihood(
 
 double CRFIDTagParticleMap::internal_computeObservationLikelihood(
     const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const {
-    // Read-only on the map (thread-safe): sums the log-likelihood of every read
-    // of an already-mapped tag, the tag estimate against the reader placed by
-    // this robot pose (SPEC section 2); the policy picks which reads count.
-    const mrpt::math::TPose2D robot(takenFrom.x(), takenFrom.y(), takenFrom.yaw());
-    double sum = 0;
-    if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs)) {
-        const rfir::models::DetectionLikelihood det(likelihoodOptions.detection);
-        for (const auto& rd : o->readings)
-            for (const auto& id : rd.tags) {
-                const auto it = m_tags.find(id);
-                if (it == m_tags.end()) continue;
-                const auto w = Impl::whichForRobot(*this, it->second, m_track[0]);
-                if (w != Impl::Which::None)
-                    sum += Impl::robotReadLogLik(*this, it->second, w, robot,
-                                                 Impl::area(rd.reader), det);
-            }
-    } else if (const auto* b =
-                   dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&obs)) {
-        const auto sensor = Impl::sensorPose(*b, robot);
-        for (const auto& z : b->sensedData) {
-            const auto it = m_landmarks.find(landmarkName(z.landmarkID));
-            if (it == m_landmarks.end()) continue;
-            const PointEstimate* est =
-                Impl::estimateForRobot(*this, it->second, m_track[1]);
-            if (est) sum += Impl::rbLogLik(*this, *est, sensor, z.range, z.yaw);
-        }
-    }
-    return sum;
+    // Read-only on the map (thread-safe): the sum of the log-likelihoods of the
+    // reads the policy picks (SPEC section 2), each mapped landmark's estimate
+    // against the reader or sensor placed by this robot pose. The robot filter
+    // resolves the reads once per step and sums them per particle itself.
+    TRobotReads r;
+    if (!resolveRobotReads(obs, r)) return 0;
+    return robotReadsLogLikelihood(r, {takenFrom.x(), takenFrom.y(), takenFrom.yaw()});
 }
 
 bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
                                             TRobotReads& out) const {
-    // The lookups and policy tests of internal_computeObservationLikelihood,
-    // done once: they do not depend on the robot pose.
+    // The lookups and policy tests: they do not depend on the robot pose.
     out = TRobotReads();
     out.det = rfir::models::DetectionLikelihood(likelihoodOptions.detection);
     const bool particles =
@@ -195,7 +173,6 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
 double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
                                                     const mrpt::math::TPose2D& robot,
                                                     const double* plainTerms) const {
-    // Same terms, same order of summation as internal_computeObservationLikelihood.
     double sum = 0;
     if (!r.rangeBearing) {
         for (const auto& rd : r.reads)

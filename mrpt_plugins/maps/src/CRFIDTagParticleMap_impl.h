@@ -198,17 +198,11 @@ struct CRFIDTagParticleMapImpl {
                                      : &e.visitStartEstimate;
     }
 
-    /** Robot log-likelihood of one read of `e` by reader `r`: against the tag
-     * mean, or (tag_particles) log of the mean likelihood over the K stored
-     * tag particles, i.e. the detection likelihood marginalised over the tag's
-     * uncertainty (O(K)). */
-    static double robotReadLogLik(const Map& m, const Entry& e, Which w,
-                                  const mrpt::math::TPose2D& robot, const ReaderArea& r,
-                                  const rfir::models::DetectionLikelihood& det) {
-        return robotReadLogLik(m, w == Which::Current ? e.estimate : e.visitStartEstimate,
-                               w == Which::Current ? e.sample : e.visitStartSample, robot,
-                               r, det);
-    }
+    /** Robot log-likelihood of one read by reader `r` of a tag with estimate
+     * `est`: against the tag mean, or (tag_particles) log of the mean
+     * likelihood over the K stored tag particles `smp`, i.e. the detection
+     * likelihood marginalised over the tag's uncertainty (O(K), K <= 64, the
+     * INI bound of robot_likelihood_k). */
     static double robotReadLogLik(const Map& m, const PointEstimate& est,
                                   const std::vector<mrpt::math::TPoint2D>& smp,
                                   const mrpt::math::TPose2D& robot, const ReaderArea& r,
@@ -216,8 +210,9 @@ struct CRFIDTagParticleMapImpl {
         if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles ||
             smp.empty())
             return det.logLikelihood(robot, r, est.mean);
-        double ll[64], best = -1e300;
-        const size_t K = std::min<size_t>(smp.size(), 64);
+        constexpr size_t kMax = Map::TLikelihoodOptions::kMaxRobotLikelihoodK;
+        double ll[kMax], best = -1e300;
+        const size_t K = std::min(smp.size(), kMax);
         for (size_t k = 0; k < K; k++)
             best = std::max(best, ll[k] = det.logLikelihood(robot, r, smp[k]));
         double s = 0;

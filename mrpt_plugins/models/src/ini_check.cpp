@@ -40,7 +40,7 @@ size_t readIniEnum(const mrpt::config::CConfigFileBase& cfg, const std::string& 
 
 size_t readIniPositiveInt(const mrpt::config::CConfigFileBase& cfg,
                           const std::string& section, const std::string& key,
-                          size_t defaultValue) {
+                          size_t defaultValue, size_t maxValue) {
     const std::string v = cfg.read_string(section, key, std::to_string(defaultValue));
     size_t pos = 0;
     long long x = 0;
@@ -52,6 +52,9 @@ size_t readIniPositiveInt(const mrpt::config::CConfigFileBase& cfg,
     if (pos == 0 || pos != v.size() || x <= 0)
         throw std::runtime_error(where(section, key) +
                                  ": expected a positive integer, got '" + v + "'");
+    if (static_cast<unsigned long long>(x) > maxValue)
+        throw std::runtime_error(where(section, key) + ": at most " +
+                                 std::to_string(maxValue) + ", got '" + v + "'");
     return static_cast<size_t>(x);
 }
 

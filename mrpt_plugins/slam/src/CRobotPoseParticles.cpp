@@ -3,7 +3,6 @@
 #include <rfir/slam/slam_options.h>
 
 #include <mrpt/obs/CActionCollection.h>
-#include <mrpt/poses/CPose3D.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <algorithm>
@@ -25,20 +24,6 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
                                        start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
     lastLL_.clear();
-}
-
-void CRobotPoseParticles::setWeighing(const mrpt::maps::CMetricMap* map,
-                                      std::vector<mrpt::obs::CObservation::Ptr> obs) {
-    if (!map || obs.empty()) {
-        logLikelihood = nullptr;
-        return;
-    }
-    logLikelihood = [map, obs = std::move(obs)](size_t, const mrpt::poses::CPose2D& p) {
-        const mrpt::poses::CPose3D pose(p);
-        double ll = 0;
-        for (const auto& o : obs) ll += map->computeObservationLikelihood(*o, pose);
-        return ll;
-    };
 }
 
 mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {

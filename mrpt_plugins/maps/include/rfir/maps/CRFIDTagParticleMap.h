@@ -234,6 +234,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         /** robot_likelihood, robot_likelihood_k (K tag particles, RFID only). */
         TRobotLikelihood robotLikelihood = TRobotLikelihood::TagMean;
         size_t robotLikelihoodK = 12;
+        static constexpr size_t kMaxRobotLikelihoodK = 64;  //!< its INI bound
 
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;

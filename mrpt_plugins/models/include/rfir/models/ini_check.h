@@ -4,6 +4,7 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,10 +21,11 @@ size_t readIniEnum(const mrpt::config::CConfigFileBase& cfg, const std::string& 
                    const std::string& key, const std::vector<std::string>& names,
                    size_t defaultIndex);
 
-/** Reads a positive integer (> 0); throws naming section and key otherwise. */
+/** Reads an integer in [1, maxValue]; throws naming section and key otherwise. */
 size_t readIniPositiveInt(const mrpt::config::CConfigFileBase& cfg,
                           const std::string& section, const std::string& key,
-                          size_t defaultValue);
+                          size_t defaultValue,
+                          size_t maxValue = std::numeric_limits<size_t>::max());
 
 /** Reads a finite double >= minValue (or > minValue when strict). */
 double readIniDouble(const mrpt::config::CConfigFileBase& cfg, const std::string& section,

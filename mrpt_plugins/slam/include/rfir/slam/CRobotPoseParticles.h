@@ -1,14 +1,13 @@
 /* rfir: the robot filter of PF-SLAM and PS-SLAM (SPEC section 4; 003
  * Algorithm 1 lines 2-4 and 19-28; 004 Algorithm 1) on MRPT's particle-filter
  * machinery: CParticleFilter::executeOn drives this class, which moves the
- * particles with the odometry model and weighs them with the landmark map's
- * computeObservationLikelihood (the map receives the ROBOT pose). */
+ * particles with the odometry model and weighs them with `logLikelihood`: the
+ * SLAM engine passes the landmark map's reads resolved once per step, the same
+ * sum as the map's computeObservationLikelihood for the ROBOT pose. */
 #pragma once
 
 #include <mrpt/bayes/CParticleFilterCapable.h>
 #include <mrpt/bayes/CParticleFilterData.h>
-#include <mrpt/maps/CMetricMap.h>
-#include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <functional>
@@ -27,12 +26,8 @@ class CRobotPoseParticles
     /** M particles at `start`, with Gaussian spread (std) in xy and heading. */
     void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi);
 
-    /** The map and observations the next executeOn step weighs with (none:
-     * motion only). The map must outlive the step. */
-    void setWeighing(const mrpt::maps::CMetricMap* map,
-                     std::vector<mrpt::obs::CObservation::Ptr> obs);
     /** Log-likelihood of particle i at its moved pose, for the next executeOn
-     * step (empty: motion only); replaces setWeighing's map likelihood. */
+     * step (empty: motion only). */
     std::function<double(size_t i, const mrpt::poses::CPose2D& pose)> logLikelihood;
     /** Called after the motion and before the weighing: where the literal
      * PF-SLAM order updates the tags. */

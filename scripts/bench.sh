@@ -42,7 +42,7 @@ mkdir -p "$out/img"
 tmp=$(mktemp -d /tmp/rfir_bench_run_XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 
-# The source tree's INIs (the build's copy is refreshed only at configure time).
+# The source tree's INIs, as they are now (even if rfir-bench was not rebuilt).
 "$BUILD/bin/rfir-bench" --config-dir config_ini --json "$tmp/benchmark.json" \
   --markdown "$tmp/results.md" --plots "$tmp" "${args[@]}" | tee "$tmp/table.txt"
 

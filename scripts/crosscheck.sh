@@ -13,10 +13,12 @@ BIN=${RFIR_BUILD_DIR:-build}/bin
 SEEDS=3; OUT=out/crosscheck; CFGDIR=""; ONLY=""
 while [ $# -gt 0 ]; do
   case $1 in
-    --seeds) SEEDS=$2; shift 2 ;;
-    --out) OUT=$2; shift 2 ;;
-    --config-dir) CFGDIR=$2; shift 2 ;;
-    --scenarios) ONLY=$2; shift 2 ;;
+    --seeds|--out|--config-dir|--scenarios)
+      [ $# -ge 2 ] || { echo "crosscheck.sh: $1 needs a value" >&2; exit 2; }
+      case $1 in
+        --seeds) SEEDS=$2 ;; --out) OUT=$2 ;; --config-dir) CFGDIR=$2 ;; --scenarios) ONLY=$2 ;;
+      esac
+      shift 2 ;;
     -h|--help) sed -n 2,9p "$0"; exit 0 ;;
     *) echo "crosscheck.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
   esac
@@ -39,11 +41,14 @@ declare -A SC=(
 )
 ORDER="loop60 async60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300"
 [ -n "$ONLY" ] && ORDER=${ONLY//,/ }
+[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
+for sc in $ORDER; do
+  [ -n "${SC[$sc]:-}" ] || { echo "crosscheck.sh: unknown scenario '$sc' (known: ${!SC[*]})" >&2; exit 2; }
+done
 mkdir -p "$OUT"
 echo "| scenario | PF-SLAM | PS-SLAM | FastSLAM | dead reckoning |"
 echo "| --- | --- | --- | --- | --- |"
 for sc in $ORDER; do
-  [ -n "${SC[$sc]:-}" ] || { echo "crosscheck.sh: unknown scenario '$sc'" >&2; exit 2; }
   res="$OUT/$sc.results"; : > "$res"
   for s in $(seq 1 "$SEEDS"); do
     n="$OUT/${sc}_$s"
@@ -54,7 +59,9 @@ for sc in $ORDER; do
       cfg=(); [ -n "$CFGDIR" ] && cfg=(--config "$CFGDIR/slam_$m.ini")
       "$BIN/rfir-slam" --rawlog "$n.rawlog" --method "$m" "${cfg[@]}" --seed "$s" \
         --out-dir "${n}_$m" > "${n}_$m.log" 2>&1
-      "$BIN/rfir-eval" --json-only --rawlog "$n.rawlog" --path "${n}_$m/path.tum" \
+      # dead reckoning once per log, with pf
+      dr=(); [ "$m" = pf ] || dr=(--no-odometry)
+      "$BIN/rfir-eval" --json-only "${dr[@]}" --rawlog "$n.rawlog" --path "${n}_$m/path.tum" \
         --gt-path "$n.gt.tum" --map "${n}_$m/map.txt" --gt-map "$n.gt_map.txt" \
         | sed "s/^/$m /" >> "$res"
     done

@@ -24,8 +24,8 @@ has_out=0
 for a in "${args[@]}"; do [ "$a" = "--out" ] && has_out=1; done
 [ $has_out -eq 1 ] || args+=(--out docs)
 # A snapshot of the INIs, as committed (uncommitted edits are not used; files
-# git does not track are taken as they are): the build's copy is refreshed only
-# at configure time, and a snapshot keeps a long run consistent.
+# git does not track are taken as they are): results.md then matches a commit,
+# and a snapshot keeps a long run consistent while the tree is edited.
 CFG=$(mktemp -d)
 trap 'rm -rf "$CFG"' EXIT
 for f in config_ini/*.ini; do

@@ -22,15 +22,16 @@ fi
 cmake --build "$BUILD" -j"$JOBS" --target rfir-ir-experiments rfir-sim rfir-localize rfir-ids
 
 args=("$@")
-out=docs
+out=""
 for ((i = 0; i < ${#args[@]}; i++)); do
-  [ "${args[$i]}" = "--out" ] && out=${args[$((i + 1))]}
+  if [ "${args[$i]}" = "--out" ]; then
+    [ $((i + 1)) -lt ${#args[@]} ] || { echo "experiments_ir.sh: --out needs a folder" >&2; exit 2; }
+    out=${args[$((i + 1))]}
+  fi
 done
-has_out=0
-for a in "${args[@]}"; do [ "$a" = "--out" ] && has_out=1; done
-[ $has_out -eq 1 ] || args+=(--out docs)
+[ -n "$out" ] || { out=docs; args+=(--out docs); }
 
-# The source tree's INIs (the build's copy is refreshed only at configure time).
+# The source tree's INIs, as they are now (even if nothing was rebuilt).
 "$BUILD/bin/rfir-ir-experiments" --config-dir config_ini --work "$WORK" \
   --notes apps/rfir-localize/results_notes.md "${args[@]}"
 

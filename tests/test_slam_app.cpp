@@ -36,10 +36,14 @@ std::string slurp(const std::string& f) {
     ss << in.rdbuf();
     return ss.str();
 }
-rfir::sim::TSimOutput simulated() {
-    auto cfg = rfir::sim::TSimConfig();
-    cfg.maxDuration = 30;
-    return rfir::sim::simulate(cfg, 2);
+/** The 30 s run every test uses, simulated once per process. */
+const rfir::sim::TSimOutput& simulated() {
+    static const rfir::sim::TSimOutput out = [] {
+        auto cfg = rfir::sim::TSimConfig();
+        cfg.maxDuration = 30;
+        return rfir::sim::simulate(cfg, 2);
+    }();
+    return out;
 }
 std::string dataDir() {
     static std::string dir;
@@ -76,7 +80,7 @@ TEST(SlamApp, WritesEveryOutput) {
 // nothing, e.g. no motion noise drawn for the first odometry record.
 TEST(SlamApp, TheRawlogRunIsTheInMemoryRun) {
     const std::string d = dataDir(), out = d + "/out_same";
-    const auto sim = simulated();
+    const auto& sim = simulated();
     for (const char* m : {"pf", "ps"}) {
         const std::string ini =
             std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + m + ".ini";

@@ -25,7 +25,7 @@ ap.add_argument("--t0", type=float, default=0.0, help="first timestamp, s")
 ap.add_argument("--kidnap", type=float, default=-1,
                 help="at this time the robot is carried 2 s (no records) to a random spot")
 ap.add_argument("--seed", type=int, default=1)
-ap.add_argument("--start", default="0.5,0.5,0")
+ap.add_argument("--start", default="0.5,0.5,0", help="start pose x,y,phi (the log's start record)")
 a = ap.parse_args()
 rng = random.Random(a.seed)
 W, H = (float(v) for v in a.area.split("x"))
@@ -78,17 +78,13 @@ def waypoints():
         while True:
             yield (rng.uniform(m, W - m), rng.uniform(m, H - m))
 
-if a.start:
-    x, y, th = (float(v) for v in a.start.split(","))
-else:
-    x, y, th = 0.5, 0.5, 0.0
+x, y, th = (float(v) for v in a.start.split(","))
 ox, oy, oth = 0.0, 0.0, 0.0  # odometry frame = start pose
 dt_odom = 0.02 if a.async_ else 0.1
 lines = ["format textlog 1", f"# foreign simulator seed {a.seed} layout {a.layout}"]
 for r in readers:
     lines.append(f"reader {r[0]} {r[1]:.6f} {r[2]:.6f} {r[3]} {r[4]}")
-if a.start:
-    lines.append(f"start {x} {y} {th}")
+lines.append(f"start {x} {y} {th}")
 gt, wp = [], waypoints()
 goal = next(wp)
 t = 0.0
@@ -115,7 +111,6 @@ def reads(px, py, pth, r):
 def fmt(v):
     return f"{v:.6f}"
 
-step = 0
 while t <= a.duration + 1e-9:
     T = a.t0 + t
     gt.append((T, x, y, th))
@@ -152,8 +147,7 @@ while t <= a.duration + 1e-9:
     co, so = math.cos(oth), math.sin(oth)
     ox, oy, oth = ox + co * nx - so * ny, oy + so * nx + co * ny, oth + nth
     t += dt_odom
-    step += 1
-    if a.kidnap > 0 and not kid_done and t >= a.kidnap:
+    if a.kidnap >= 0 and not kid_done and t >= a.kidnap:
         kid_done = True
         # carried for 2 s: no odometry, no reads; put down elsewhere
         t += 2.0

@@ -109,6 +109,8 @@ std::vector<TRealtimeResult> runRealtime(
 /** Fills the ratios (to the floor, to PS-SLAM) and the targets. */
 void evaluate(TBenchReport& r);
 
+/** "PS-SLAM", "PF-SLAM", "FastSLAM" for ps, pf, fastslam. */
+const char* methodLabel(const std::string& method);
 void printTable(const TBenchReport& r, std::ostream& out);
 std::string toJson(const TBenchReport& r);
 /** The results as Markdown tables (for docs/benchmark.md). */

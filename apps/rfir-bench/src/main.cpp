@@ -9,6 +9,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/filesystem.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -77,10 +78,15 @@ std::vector<std::string> parseMethods(const std::string& s) {
 }
 
 /** Stores case i of a sweep, keeping the timing of the fastest round. */
-void keepFastest(std::vector<TCaseResult>& v, size_t i, const TCaseResult& c) {
+bool skipped(const TCaseResult& c) { return c.skipped; }
+bool skipped(const TFloorResult&) { return false; }
+
+/** v[i] keeps the fastest (median) of the rounds of one case or floor. */
+template <typename T>
+void keepFastest(std::vector<T>& v, size_t i, const T& c) {
     if (i >= v.size())
         v.push_back(c);
-    else if (!c.skipped && c.medianUs < v[i].medianUs)
+    else if (!skipped(c) && c.medianUs < v[i].medianUs)
         v[i] = c;
 }
 
@@ -89,16 +95,18 @@ void runAll(TBenchReport& r) {
     auto progress = [](const std::string& s) {
         std::cerr << "rfir-bench: " << s << std::endl;
     };
-    for (size_t M : o.sweepM) r.floor.push_back(runFloor(o, M));
-    bool fixedMInFloor = false;
-    for (const auto& f : r.floor) fixedMInFloor |= f.M == o.fixedM;
-    if (!fixedMInFloor) r.floor.push_back(runFloor(o, o.fixedM));
-    // Several rounds, each case keeping its fastest round: a shared machine
-    // slows whole stretches of a run (other jobs on the other core share the
-    // caches and the memory bus), so the rounds are spread over time.
+    std::vector<size_t> floorM = o.sweepM;
+    if (std::find(floorM.begin(), floorM.end(), o.fixedM) == floorM.end())
+        floorM.push_back(o.fixedM);
+    // Several rounds, each case and the floor keeping their fastest round: a
+    // shared machine slows whole stretches of a run (other jobs on the other
+    // core share the caches and the memory bus), so the rounds are spread over
+    // time, and the floor is measured the same way as the figures it divides.
     for (size_t round = 0; round < o.rounds; round++) {
         const std::string tag =
             " (round " + std::to_string(round + 1) + "/" + std::to_string(o.rounds) + ")";
+        for (size_t k = 0; k < floorM.size(); k++)
+            keepFastest(r.floor, k, runFloor(o, floorM[k]));
         size_t i = 0;
         for (size_t M : o.sweepM)
             for (const auto& m : o.methods) {

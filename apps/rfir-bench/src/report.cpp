@@ -11,13 +11,14 @@
 #include <sstream>
 
 namespace rfir::bench {
-namespace {
 const char* methodLabel(const std::string& m) {
     return m == "ps"         ? "PS-SLAM"
            : m == "pf"       ? "PF-SLAM"
            : m == "fastslam" ? "FastSLAM"
                              : "?";
 }
+
+namespace {
 
 std::string row(const char* f, ...) __attribute__((format(printf, 1, 2)));
 std::string row(const char* f, ...) {

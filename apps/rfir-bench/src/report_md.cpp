@@ -6,13 +6,6 @@
 
 namespace rfir::bench {
 namespace {
-const char* label(const std::string& m) {
-    return m == "ps"         ? "PS-SLAM"
-           : m == "pf"       ? "PF-SLAM"
-           : m == "fastslam" ? "FastSLAM"
-                             : "?";
-}
-
 std::string num(double v, int prec) {
     char buf[64];
     std::snprintf(buf, sizeof(buf), "%.*f", prec, v);
@@ -26,7 +19,7 @@ void cases(std::ostringstream& o, const std::vector<TCaseResult>& v) {
          "| ---: "
          "| ---: | ---: |\n";
     for (const auto& c : v) {
-        o << "| " << label(c.method) << " | " << c.M << " | " << c.N << " | ";
+        o << "| " << methodLabel(c.method) << " | " << c.M << " | " << c.N << " | ";
         if (c.skipped) {
             o << "skipped: " << c.skipReason << " | | | | | | | |\n";
             continue;
@@ -66,7 +59,7 @@ std::string toMarkdown(const TBenchReport& r) {
          "---: | "
          "---: | ---: | ---: | ---: |\n";
     for (const auto& x : r.realtime)
-        o << "| " << label(x.method) << " | " << x.M << " | " << num(x.simSeconds, 0)
+        o << "| " << methodLabel(x.method) << " | " << x.M << " | " << num(x.simSeconds, 0)
           << " | " << x.steps << " | " << x.tagsInWorld << " | " << x.tagsMapped << " | "
           << x.detections << " | " << num(x.slamSeconds, 2) << " | "
           << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " |\n";

@@ -49,9 +49,12 @@ struct TStepper {
     size_t base;
     size_t peak = 0;
     double lastWall = 0;
-    void samplePeak() {
-        peak = std::max(peak, heapInUse() - std::min(base, heapInUse()));
+    /** Heap in use above `base` now. */
+    size_t above() const {
+        const size_t h = heapInUse();
+        return h - std::min(base, h);
     }
+    void samplePeak() { peak = std::max(peak, above()); }
     /** Returns the step's thread CPU time; lastWall gets its wall time. */
     double step(const rfir::slam::TSlamInput& in) {
         const double w0 = wallSeconds(), c0 = threadCpuSeconds();
@@ -91,12 +94,13 @@ TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
         r.buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
         for (size_t k = 0; k < o.warmupUpdates; k++) st.step(drive.timedStep(k));
         std::vector<double> us, wall;
+        const bool trace = std::getenv("RFIR_BENCH_TRACE") != nullptr;
         for (size_t k = 0; k < o.timedUpdates; k++) {
             // Inputs are built outside the timed call.
             const auto in = drive.timedStep(o.warmupUpdates + k);
             us.push_back(1e6 * st.step(in));
             wall.push_back(1e6 * st.lastWall);
-            if (std::getenv("RFIR_BENCH_TRACE"))
+            if (trace)
                 std::fprintf(stderr, "%zu %.1f\n", k, us.back());
         }
         r.updates = us.size();
@@ -106,8 +110,7 @@ TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
         r.meanUs = us.empty()
                        ? 0
                        : std::accumulate(us.begin(), us.end(), 0.0) / double(us.size());
-        st.samplePeak();
-        r.stateBytes = heapInUse() - std::min(base, heapInUse());
+        r.stateBytes = st.above();
         r.peakBytes = std::max(st.peak, r.stateBytes);
         r.tagsMapped = engine->landmarks().size();
     }

@@ -1,34 +1,38 @@
 #include <rfir/common/rawlog_io.h>
 #include <rfir/eval/metrics.h>
 
-#include <map>
-
 namespace rfir::eval {
+CRawlogInfoBuilder::CRawlogInfoBuilder(const rfir::obs::CObservationLogHeader& h) {
+    info_.readers = h.readers;
+    info_.rbSensor = h.rbSensor;
+    info_.startPose = h.startPose;
+    readersFromHeader_ = !info_.readers.empty();
+}
+
+void CRawlogInfoBuilder::add(const rfir::common::TRawlogStep& st) {
+    info_.steps++;
+    if (st.odometry) absolute_.push_back({st.t, *st.odometry});
+    if (st.odometryIncrement) {
+        acc_ = acc_ + *st.odometryIncrement;
+        accumulated_.push_back({st.t, acc_});
+    }
+    if (!readersFromHeader_ && st.rfid)
+        for (const auto& r : st.rfid->readings) seenReaders_.emplace(r.reader.id, r.reader);
+}
+
+TRawlogInfo CRawlogInfoBuilder::finish() {
+    TRawlogInfo info = info_;
+    for (const auto& [id, r] : seenReaders_) info.readers.push_back(r);
+    info.odometry = absolute_.empty() ? accumulated_ : absolute_;
+    return info;
+}
+
 TRawlogInfo readRawlogInfo(const std::string& rawlogPath) {
     rfir::common::CRawlogReader rd(rawlogPath);
-    TRawlogInfo info;
-    info.readers = rd.header().readers;
-    info.rbSensor = rd.header().rbSensor;
-    info.startPose = rd.header().startPose;
-    const bool readersFromHeader = !info.readers.empty();
-    std::map<std::string, rfir::obs::TRFIDReader> seenReaders;
-    rfir::common::TPath2D absolute, accumulated;
-    mrpt::poses::CPose2D acc;
+    CRawlogInfoBuilder b(rd.header());
     rfir::common::TRawlogStep st;
-    while (rd.next(st)) {
-        info.steps++;
-        if (st.odometry) absolute.push_back({st.t, *st.odometry});
-        if (st.odometryIncrement) {
-            acc = acc + *st.odometryIncrement;
-            accumulated.push_back({st.t, acc});
-        }
-        if (!readersFromHeader && st.rfid)
-            for (const auto& r : st.rfid->readings)
-                seenReaders.emplace(r.reader.id, r.reader);
-    }
-    for (const auto& [id, r] : seenReaders) info.readers.push_back(r);
-    info.odometry = absolute.empty() ? accumulated : absolute;
-    return info;
+    while (rd.next(st)) b.add(st);
+    return b.finish();
 }
 
 }  // namespace rfir::eval

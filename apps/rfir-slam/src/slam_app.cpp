@@ -38,16 +38,20 @@ std::string withoutRawlogExt(const std::string& p) {
 struct TLoaded {
     rfir::obs::CObservationLogHeader header;
     std::vector<rfir::slam::TSlamInput> inputs;
+    rfir::eval::TRawlogInfo info;  //!< odometry and sensor geometry, for the scoring
 };
 
+/** Reads the rawlog once: the filters' inputs and what the scoring needs. */
 TLoaded readInputs(const std::string& path) {
     if (!mrpt::system::fileExists(path))
         throw std::runtime_error("cannot read rawlog '" + path + "'");
     rfir::common::CRawlogReader rd(path);
     TLoaded l;
     l.header = rd.header();
+    rfir::eval::CRawlogInfoBuilder info(l.header);
     rfir::common::TRawlogStep st;
     while (rd.next(st)) {
+        info.add(st);
         rfir::slam::TSlamInput in;
         in.t = st.t;
         in.odometryIncrement = st.odometryIncrement;
@@ -56,7 +60,36 @@ TLoaded readInputs(const std::string& path) {
         l.inputs.push_back(std::move(in));
     }
     if (l.inputs.empty()) throw std::runtime_error(path + ": no sensing instant");
+    l.info = info.finish();
     return l;
+}
+
+/** The ground truth of a run, loaded once for every set of outputs. */
+struct TTruth {
+    std::optional<TPath2D> path;
+    std::optional<TMapFile> map;
+    std::optional<TPath2D> odometry;  //!< aligned at the start to `path`
+    std::optional<rfir::eval::TRobotErrors> odometryErrors;
+    std::vector<rfir::obs::TRFIDReader> readers;
+    std::optional<rfir::obs::TRBSensor> rbSensor;
+};
+
+TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
+    TTruth t;
+    if (!a.gtPath) {
+        if (a.gtMap)
+            std::cerr << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
+        return t;
+    }
+    t.path = rfir::common::loadTUM(*a.gtPath);
+    if (!info.odometry.empty()) {
+        t.odometry = rfir::eval::alignOdometryAtStart(info.odometry, *t.path);
+        t.odometryErrors = rfir::eval::computeRobotErrors(*t.odometry, *t.path);
+    }
+    if (a.gtMap) t.map = rfir::common::loadMapFile(*a.gtMap);
+    t.readers = info.readers;
+    t.rbSensor = info.rbSensor;
+    return t;
 }
 
 std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
@@ -85,41 +118,32 @@ void findGroundTruth(TAppArgs& a) {
 }
 
 /** Errors against the ground truth, if there is one (fig gets the truth). */
-std::optional<rfir::eval::TEvalResult> evaluate(const TAppArgs& a,
-                                                const std::string& label,
-                                                const TPath2D& est,
-                                                const TMapFile& estMap,
+std::optional<rfir::eval::TEvalResult> evaluate(const TTruth& truth, const std::string& label,
+                                                const TPath2D& est, const TMapFile& estMap,
                                                 rfir::eval::TMapFigure& fig) {
+    if (!truth.path) return std::nullopt;
+    const TPath2D& gt = *truth.path;
     rfir::eval::TEvalResult r;
     r.label = label;
-    if (a.gtPath) {
-        const TPath2D gt = rfir::common::loadTUM(*a.gtPath);
-        fig.gtPath = gt;
-        r.robot = rfir::eval::computeRobotErrors(est, gt);
-        const auto info = rfir::eval::readRawlogInfo(a.rawlog);
-        if (!info.odometry.empty()) {
-            const TPath2D odo = rfir::eval::alignOdometryAtStart(info.odometry, gt);
-            fig.odomPath = odo;
-            r.odometry = rfir::eval::computeRobotErrors(odo, gt);
-        }
-        if (a.gtMap) {
-            const TMapFile gtm = rfir::common::loadMapFile(*a.gtMap);
-            fig.gtMap = gtm;
-            bool anyTag = false;
-            for (const auto& e : estMap) anyTag |= e.kind == TMapEntry::Kind::Tag;
-            const auto kind = anyTag || estMap.empty() ? TMapEntry::Kind::Tag
-                                                       : TMapEntry::Kind::Landmark;
-            r.map = rfir::eval::computeMapErrors(estMap, gtm, kind);
-            if (kind == TMapEntry::Kind::Tag && !info.readers.empty())
-                rfir::eval::setPassedOver(
-                    *r.map, rfir::eval::tagsPassedOver(gtm, gt, info.readers), estMap);
-            else if (kind == TMapEntry::Kind::Landmark && info.rbSensor)
-                rfir::eval::setPassedOver(
-                    *r.map, rfir::eval::landmarksInView(gtm, gt, *info.rbSensor), estMap);
-        }
-    } else if (a.gtMap)
-        std::cerr << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
-    if (!r.robot) return std::nullopt;
+    fig.gtPath = gt;
+    r.robot = rfir::eval::computeRobotErrors(est, gt);
+    if (truth.odometry) fig.odomPath = *truth.odometry;
+    r.odometry = truth.odometryErrors;
+    if (truth.map) {
+        const TMapFile& gtm = *truth.map;
+        fig.gtMap = gtm;
+        bool anyTag = false;
+        for (const auto& e : estMap) anyTag |= e.kind == TMapEntry::Kind::Tag;
+        const auto kind = anyTag || estMap.empty() ? TMapEntry::Kind::Tag
+                                                   : TMapEntry::Kind::Landmark;
+        r.map = rfir::eval::computeMapErrors(estMap, gtm, kind);
+        if (kind == TMapEntry::Kind::Tag && !truth.readers.empty())
+            rfir::eval::setPassedOver(
+                *r.map, rfir::eval::tagsPassedOver(gtm, gt, truth.readers), estMap);
+        else if (kind == TMapEntry::Kind::Landmark && truth.rbSensor)
+            rfir::eval::setPassedOver(
+                *r.map, rfir::eval::landmarksInView(gtm, gt, *truth.rbSensor), estMap);
+    }
     return r;
 }
 
@@ -131,6 +155,7 @@ void writeErrors(const std::string& file, const rfir::eval::TEvalResult& r) {
 /** path<sfx>.tum, map<sfx>.txt, path_map<sfx>.png and errors<sfx>.json of a
  * run, named `label` in the table, the figure and the map's header. */
 std::optional<rfir::eval::TEvalResult> writeAndScore(const TAppArgs& a,
+                                                     const TTruth& truth,
                                                      const rfir::slam::TSlamRun& run,
                                                      const std::string& sfx,
                                                      const std::string& label,
@@ -144,7 +169,7 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(const TAppArgs& a,
     fig.title = "rfir-slam " + label + ": " + mrpt::system::extractFileName(a.rawlog);
     fig.estPath = path;
     fig.estMap = map;
-    auto r = evaluate(a, label, path, map, fig);
+    auto r = evaluate(truth, label, path, map, fig);
     rfir::eval::plotMapFigure(a.outDir + "/path_map" + sfx + ".png", fig);
     if (r) writeErrors(a.outDir + "/errors" + sfx + ".json", *r);
     return r;
@@ -154,6 +179,7 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(const TAppArgs& a,
 std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
                                                       const rfir::slam::TSlamConfig& cfg,
                                                       const TLoaded& data,
+                                                      const TTruth& truth,
                                                       const mrpt::poses::CPose2D& start,
                                                       const rfir::slam::TSlamRun& run) {
     for (const auto& in : data.inputs)
@@ -168,7 +194,7 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
     std::cerr << "rfir-slam: smoothed in " << res.iterations << " iterations ("
               << res.reads << " reads; cost " << res.initialCost << " -> "
               << res.finalCost << ")\n";
-    return writeAndScore(a, res.run, "_smoothed", cfg.slam.method + " smoothed",
+    return writeAndScore(a, truth, res.run, "_smoothed", cfg.slam.method + " smoothed",
                          "<tag> <id> <x> <y> <sx> <sy>");
 }
 }  // namespace
@@ -205,7 +231,8 @@ int runSlamApp(const TAppArgs& args) {
     if (!mrpt::system::directoryExists(a.outDir) &&
         !mrpt::system::createDirectory(a.outDir))
         throw std::runtime_error("cannot create output folder '" + a.outDir + "'");
-    const auto errs = writeAndScore(a, run, "", cfg.slam.method,
+    const TTruth truth = loadTruth(a, data.info);
+    const auto errs = writeAndScore(a, truth, run, "", cfg.slam.method,
                                     "<tag or landmark> <id> <x> <y> <sx> <sy>");
     const std::string settings = rfir::slam::dumpSlamConfig(cfg);
     rfir::common::writeFileAtomically(a.outDir + "/settings.ini",
@@ -214,7 +241,7 @@ int runSlamApp(const TAppArgs& args) {
         o << statsJson(cfg, run, a.seed);
     });
     std::optional<rfir::eval::TEvalResult> smoothed;
-    if (a.smooth) smoothed = smoothAndWrite(a, cfg, data, start, run);
+    if (a.smooth) smoothed = smoothAndWrite(a, cfg, data, truth, start, run);
     std::vector<rfir::eval::TEvalResult> rows;
     if (errs) rows.push_back(*errs);
     if (smoothed) {

@@ -5,11 +5,13 @@
 #pragma once
 
 #include <rfir/common/map_io.h>
+#include <rfir/common/rawlog_io.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/obs/CObservationLogHeader.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
 
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -142,6 +144,22 @@ struct TRawlogInfo {
     /** The robot's world pose at the first odometry record (textlog `start`). */
     std::optional<mrpt::poses::CPose2D> startPose;
     size_t steps = 0;
+};
+
+/** Builds a TRawlogInfo step by step, for a program that reads the rawlog's
+ * steps for its own use too (readRawlogInfo is this over a whole file). */
+class CRawlogInfoBuilder {
+  public:
+    explicit CRawlogInfoBuilder(const rfir::obs::CObservationLogHeader& header);
+    void add(const rfir::common::TRawlogStep& st);
+    TRawlogInfo finish();
+
+  private:
+    TRawlogInfo info_;
+    bool readersFromHeader_;
+    std::map<std::string, rfir::obs::TRFIDReader> seenReaders_;
+    rfir::common::TPath2D absolute_, accumulated_;
+    mrpt::poses::CPose2D acc_;
 };
 
 /** Reads a rawlog once (rfir::common::CRawlogReader); throws on a corrupt file. */

@@ -1,6 +1,7 @@
 /* rfir-experiments: simulate, run a method, score it. */
 #include "runner.h"
 
+#include <rfir/common/ini_override.h>
 #include <rfir/common/slam_run.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/slam/slam_engine.h>
@@ -25,23 +26,15 @@ std::string readText(const std::string& path) {
     return ss.str();
 }
 
-/** "section.key=value" into an in-memory copy of the INI (never the file). */
-void applyEdit(mrpt::config::CConfigFileMemory& ini, const std::string& edit) {
-    const auto dot = edit.find('.'), eq = edit.find('=');
-    if (dot == std::string::npos || eq == std::string::npos || dot > eq)
-        throw std::invalid_argument("bad INI edit '" + edit + "' (section.key=value)");
-    ini.write(edit.substr(0, dot), edit.substr(dot + 1, eq - dot - 1),
-              edit.substr(eq + 1));
-}
-
 rfir::slam::TSlamConfig slamConfig(const std::string& dir, const TMethodSpec& m,
                                    const TPoint& p) {
     const std::string file = m.method == "fastslam" ? "fastslam"
                              : m.method == "ps"     ? "ps"
                                                     : "pf";
     mrpt::config::CConfigFileMemory ini(readText(dir + "/slam_" + file + ".ini"));
-    for (const auto& e : p.slamEdits) applyEdit(ini, e);
-    for (const auto& e : m.edits) applyEdit(ini, e);
+    // Edits go into an in-memory copy of the INI (never the file).
+    rfir::common::applyIniOverrides(ini, p.slamEdits);
+    rfir::common::applyIniOverrides(ini, m.edits);
     return rfir::slam::loadSlamConfig(ini, m.method);
 }
 

@@ -1,6 +1,7 @@
 /* rfir-localize: configuration. */
 #include "localize_config.h"
 
+#include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>
 #include <rfir/ir/ini_util.h>
 
@@ -61,17 +62,6 @@ std::string cleanMessage(const std::exception& e) {
     return out.empty() ? std::string(e.what()) : out;
 }
 
-void applyOverrides(mrpt::config::CConfigFileBase& c,
-                    const std::vector<std::string>& overrides) {
-    for (const auto& o : overrides) {
-        const auto eq = o.find('='), dot = o.rfind('.', eq);
-        if (eq == std::string::npos || dot == std::string::npos || dot == 0 ||
-            dot + 1 >= eq)
-            throw std::runtime_error("--set '" + o + "': expected SECTION.KEY=VALUE");
-        c.write(o.substr(0, dot), o.substr(dot + 1, eq - dot - 1), o.substr(eq + 1));
-    }
-}
-
 std::string stockIniPath() {
     return rfir::common::stockConfigDir() + "/ir_localize.ini";
 }
@@ -89,7 +79,7 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
     }
     std::string ef;
     try {
-        applyOverrides(c, cfg.overrides);
+        rfir::common::applyIniOverrides(c, cfg.overrides);
         checkSections(c, cfg.iniPath);
         cfg.params.loadFromConfigFile(c, "");
         // The map as MRPT builds its own: initializers, then a multi-map. Set

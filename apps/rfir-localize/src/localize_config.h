@@ -23,11 +23,6 @@ struct TConfig {
     std::shared_ptr<rfir::maps::CIREmitterMap> map;
 };
 
-/** Writes "SECTION.KEY=VALUE" entries into a config (the section may contain
- * dots: the last dot before '=' splits). Throws on a malformed entry. */
-void applyOverrides(mrpt::config::CConfigFileBase& c,
-                    const std::vector<std::string>& overrides);
-
 /** The text of an exception without MRPT's banners and backtrace. */
 std::string cleanMessage(const std::exception& e);
 

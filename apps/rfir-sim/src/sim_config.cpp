@@ -1,4 +1,5 @@
 /* rfir-sim: the run parameters and their INI sections. */
+#include <rfir/common/ini_override.h>
 #include <rfir/sim/simulator.h>
 
 #include "ini_section.h"
@@ -205,15 +206,7 @@ TSimConfig loadSimConfig(const std::string& iniPath,
     std::stringstream text;
     text << in.rdbuf();
     mrpt::config::CConfigFileMemory f(text.str());
-    for (const auto& o : overrides)
-    {
-        // section.key=value
-        const auto dot = o.find('.'), eq = o.find('=');
-        if (dot == std::string::npos || eq == std::string::npos || dot == 0 ||
-            eq < dot + 2)
-            throw std::runtime_error("--set '" + o + "': expected section.key=value");
-        f.write(o.substr(0, dot), o.substr(dot + 1, eq - dot - 1), o.substr(eq + 1));
-    }
+    rfir::common::applyIniOverrides(f, overrides);
     static const char* kSections[] = {"simulation", "robot", "trajectory", "kidnap",
                                       "odometry",   "rfid",  "ir",         "range_bearing"};
     std::vector<std::string> secs;

@@ -189,7 +189,15 @@ TEST(IREmitterMap, BadEmitterFileNamesFileAndLine) {
 TEST(IREmitterMap, SerializationRoundTrip) {
     CIREmitterMap m;
     m.loadEmitterFile(writeFile("d.txt", kEmitters));
-    m.likelihoodOptions.params.sigmaVolts = 0.07;
+    auto& p = m.likelihoodOptions.params;
+    p.sigmaVolts = 0.07;
+    // Every field of versions 1-3, away from its default, so that a read order
+    // that differs from the write order fails.
+    p.missLogLik = -1.5;
+    p.missRadiusFraction = 0.6;
+    p.areaMargin = 0.35;
+    p.outOfAreaLogLik = -3.25;
+    p.outOfRangeRamp = 0.125;
     m.likelihoodOptions.association = CIREmitterMap::TAssociation::Particle;
     m.setAssociationReference(mrpt::math::TPose2D(1, 2, 0.5));
     mrpt::io::CMemoryStream buf;
@@ -200,7 +208,13 @@ TEST(IREmitterMap, SerializationRoundTrip) {
     ar >> b;
     EXPECT_EQ(b.emitters().emitters().size(), 3u);
     EXPECT_EQ(b.emitters().emitters()[2].id, "39");
-    EXPECT_EQ(b.likelihoodOptions.params.sigmaVolts, 0.07);
+    const auto& q = b.likelihoodOptions.params;
+    EXPECT_EQ(q.sigmaVolts, 0.07);
+    EXPECT_EQ(q.missLogLik, -1.5);
+    EXPECT_EQ(q.missRadiusFraction, 0.6);
+    EXPECT_EQ(q.areaMargin, 0.35);
+    EXPECT_EQ(q.outOfAreaLogLik, -3.25);
+    EXPECT_EQ(q.outOfRangeRamp, 0.125);
     EXPECT_EQ(b.likelihoodOptions.association, CIREmitterMap::TAssociation::Particle);
     ASSERT_TRUE(b.associationReference());
     EXPECT_EQ(b.associationReference()->y, 2.0);

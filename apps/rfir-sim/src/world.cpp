@@ -21,7 +21,10 @@ uint32_t streamSeed(uint64_t seed, uint64_t stream)
 
 namespace
 {
-int64_t bucketKey(int64_t i, int64_t j) { return (i << 32) ^ (j & 0xffffffffLL); }
+int64_t bucketKey(int64_t i, int64_t j) {
+    // Shifted as unsigned: a left shift of a negative value is undefined.
+    return int64_t((uint64_t(i) << 32) ^ (uint64_t(j) & 0xffffffffULL));
+}
 
 /** Grid coordinates of n = floor(len / pitch) points centred in [lo, lo + len]. */
 std::vector<double> gridLine(double lo, double len, double pitch)

@@ -10,7 +10,8 @@
 namespace rfir::ir {
 namespace {
 int64_t cellKey(int64_t ix, int64_t iy) {
-    return (ix << 32) ^ (iy & 0xffffffff);
+    // Shifted as unsigned: a left shift of a negative value is undefined.
+    return int64_t((uint64_t(ix) << 32) ^ (uint64_t(iy) & 0xffffffffULL));
 }
 int64_t cellOf(double v) {
     return int64_t(std::floor(v / TEmitterSet::kGridCell));

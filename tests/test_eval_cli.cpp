@@ -95,6 +95,28 @@ TEST_F(EvalCli, TableAndJson) {
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
 }
 
+TEST_F(EvalCli, SegmentsPerTimeWindow) {
+    const auto gt = file("gt.tum", kGt);
+    // 10 mm off at t = 0 and 1, 40 mm at t = 2: windows [0, 1) and [1, 2].
+    const auto est =
+        file("est.tum", "0 0 0.01 0 0 0 0 1\n1 1 0.01 0 0 0 0 1\n2 2 0.04 0 0 0 0 1\n");
+    auto r = run("--path " + est + " --gt-path " + gt + " --segments 2");
+    ASSERT_EQ(r.rc, 0) << r.err;
+    EXPECT_NE(r.out.find("time window"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"segments\":{\"t\":[0,1,2],\"robot_mean_dist\":[0.01,0.025]}"),
+              std::string::npos)
+        << r.out;
+    for (const char* bad : {" --segments -1", " --segments x"}) {
+        r = run("--path " + est + " --gt-path " + gt + bad);
+        EXPECT_NE(r.rc, 0) << bad;
+        EXPECT_NE(r.err.find("--segments"), std::string::npos) << r.err;
+    }
+    r = run("--map " + file("m.txt", "tag a 0 0 0 0\n") + " --gt-map " +
+            file("g.txt", "tag a 0 0\n") + " --segments 2");
+    EXPECT_EQ(r.rc, 1);
+    EXPECT_NE(r.err.find("--segments needs --path"), std::string::npos) << r.err;
+}
+
 TEST_F(EvalCli, MalformedInputsNameFileAndLine) {
     const auto gt = file("gt.tum", kGt);
     const auto bad = file("bad.tum", "0 0 0 0 0 0 0 1\n1 1 zero 0 0 0 0 1\n");

@@ -235,3 +235,54 @@ TEST(EvalReport, JsonKeysAndTable) {
     r.map->kind = TMapEntry::Kind::Landmark;
     EXPECT_NE(toJson(r).find("\"landmarks_mapped\":1"), std::string::npos);
 }
+
+TEST(EvalMetrics, SegmentStatsByHand) {
+    // Errors 10, 20, 30, 40, 50 mm at t = 0, 1, 2, 3, 4; three windows over
+    // [0, 4.5): [0, 1.5) holds t = 0, 1; [1.5, 3) holds t = 2; [3, 4.5] the rest.
+    std::vector<TPoseError> e;
+    for (int k = 0; k < 5; k++)
+        e.push_back({double(k), 0, 0.01 * (k + 1), 0, 0.01 * (k + 1)});
+    auto s = segmentStats(e, 0, 4.5, 3);
+    ASSERT_EQ(s.size(), 3u);
+    EXPECT_EQ(s[0].count, 2u);
+    EXPECT_NEAR(s[0].mean_dist, 0.015, 1e-12);
+    EXPECT_NEAR(s[0].max_dy, 0.02, 1e-12);
+    EXPECT_EQ(s[1].count, 1u);
+    EXPECT_NEAR(s[1].mean_dist, 0.03, 1e-12);
+    EXPECT_EQ(s[2].count, 2u);
+    EXPECT_NEAR(s[2].mean_dist, 0.045, 1e-12);
+    // The end time belongs to the last window; times outside are clamped.
+    s = segmentStats(e, 1, 4, 3);
+    EXPECT_EQ(s[0].count, 2u);  // t = 0 (clamped) and t = 1
+    EXPECT_EQ(s[2].count, 2u);  // t = 3 and t = 4 (the closed end)
+    // A window with no pose has count 0.
+    s = segmentStats({e[0]}, 0, 4, 2);
+    EXPECT_EQ(s[1].count, 0u);
+    EXPECT_THROW(segmentStats(e, 0, 4, 0), std::invalid_argument);
+    EXPECT_THROW(segmentStats(e, 4, 4, 2), std::invalid_argument);
+}
+
+TEST(EvalReport, SegmentsInTableAndJson) {
+    TEvalResult r;
+    r.label = "PF";
+    const TPath2D gt{{0, CPose2D(0, 0, 0)}, {2, CPose2D(2, 0, 0)}};
+    r.robot =
+        computeRobotErrors({{0, CPose2D(0, 0.01, 0)}, {2, CPose2D(2, 0.03, 0)}}, gt);
+    r.odometry = r.robot;
+    r.segmentBounds = {0, 1, 2};
+    r.robotSegments = segmentStats(r.robot->perPose, 0, 2, 2);
+    r.odometrySegments = {r.robotSegments[0], TErrorStats{}};
+    const std::string j = toJson(r);
+    EXPECT_NE(j.find("\"segments\":{\"t\":[0,1,2],\"robot_mean_dist\":[0.01,0.03],"
+                     "\"dead_reckoning_mean_dist\":[0.01,null]}"),
+              std::string::npos)
+        << j;
+    const std::string t = formatErrorTable({r});
+    EXPECT_NE(t.find("0-1 s  1-2 s"), std::string::npos) << t;
+    EXPECT_NE(t.find("PF            10.0   30.0"), std::string::npos) << t;
+    EXPECT_NE(t.find("PF odometry   10.0      -"), std::string::npos) << t;
+    // Without windows: no table, no key.
+    r.segmentBounds.clear();
+    EXPECT_EQ(toJson(r).find("segments"), std::string::npos);
+    EXPECT_EQ(formatErrorTable({r}).find("time window"), std::string::npos);
+}

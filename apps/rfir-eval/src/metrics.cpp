@@ -70,6 +70,20 @@ TErrorStats statsOf(const std::vector<TPoseError>& errs) {
     return s;
 }
 
+std::vector<TErrorStats> segmentStats(const std::vector<TPoseError>& errs, double t0,
+                                      double t1, size_t n) {
+    if (n == 0) throw std::invalid_argument("segmentStats: no segment asked for");
+    if (!(t1 > t0)) throw std::invalid_argument("segmentStats: the time span is empty");
+    std::vector<std::vector<TPoseError>> bins(n);
+    for (const auto& e : errs) {
+        const double f = std::floor(double(n) * (e.t - t0) / (t1 - t0));
+        bins[size_t(std::clamp(f, 0.0, double(n - 1)))].push_back(e);
+    }
+    std::vector<TErrorStats> out;
+    for (const auto& b : bins) out.push_back(statsOf(b));
+    return out;
+}
+
 TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt,
                                 Association assoc) {
     const bool atTruth = assoc == Association::AtTruthTimes;

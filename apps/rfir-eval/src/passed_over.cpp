@@ -61,8 +61,9 @@ class CGrid {
     long cellOf(double v) const { return long(std::floor(v / cell_)); }
     static long long key(long i, long j) {
         // Shifted as unsigned: a left shift of a negative value is undefined.
-        return static_cast<long long>((static_cast<unsigned long long>(i) << 32) ^
-                                      (static_cast<unsigned long long>(j) & 0xffffffffULL));
+        return static_cast<long long>(
+            (static_cast<unsigned long long>(i) << 32) ^
+            (static_cast<unsigned long long>(j) & 0xffffffffULL));
     }
     std::vector<const TMapEntry*> pts_;
     double cell_;

@@ -17,7 +17,8 @@ void CRawlogInfoBuilder::add(const rfir::common::TRawlogStep& st) {
         accumulated_.push_back({st.t, acc_});
     }
     if (!readersFromHeader_ && st.rfid)
-        for (const auto& r : st.rfid->readings) seenReaders_.emplace(r.reader.id, r.reader);
+        for (const auto& r : st.rfid->readings)
+            seenReaders_.emplace(r.reader.id, r.reader);
 }
 
 TRawlogInfo CRawlogInfoBuilder::finish() {

@@ -86,6 +86,32 @@ std::string robotTable(const std::vector<TEvalResult>& rows, bool showMax) {
     return out + renderTable(t);
 }
 
+/** Mean distance error per time window; rows as in robotTable, the header
+ * from the first result with windows. */
+std::string segmentTable(const std::vector<TEvalResult>& rows) {
+    const TEvalResult* first = nullptr;
+    for (const auto& r : rows)
+        if (!r.segmentBounds.empty() && !first) first = &r;
+    if (!first) return {};
+    std::vector<std::vector<std::string>> t;
+    std::vector<std::string> h{"method"};
+    for (size_t k = 0; k + 1 < first->segmentBounds.size(); k++)
+        h.push_back(fmt(first->segmentBounds[k], 0) + "-" +
+                    fmt(first->segmentBounds[k + 1], 0) + " s");
+    t.push_back(h);
+    auto row = [&](const std::string& label, const std::vector<TErrorStats>& v) {
+        if (v.empty()) return;
+        std::vector<std::string> c{label};
+        for (const auto& s : v) c.push_back(s.count ? fmt(1e3 * s.mean_dist, 1) : "-");
+        t.push_back(c);
+    };
+    for (const auto& r : rows) {
+        row(r.label, r.robotSegments);
+        row(r.label + " odometry", r.odometrySegments);
+    }
+    return "Robot position error per time window (mean dr [mm])\n" + renderTable(t);
+}
+
 std::string mapTable(const std::vector<TEvalResult>& rows, bool showMax) {
     TMapEntry::Kind kind = TMapEntry::Kind::Tag;
     for (const auto& r : rows)
@@ -124,6 +150,8 @@ std::string formatErrorTable(const std::vector<TEvalResult>& rows,
     }
     std::string out;
     if (anyRobot) out += robotTable(rows, opts.showMax);
+    const std::string segments = segmentTable(rows);
+    if (!segments.empty()) out += "\n" + segments;
     if (anyRobot && anyMap) out += "\n";
     if (anyMap) out += mapTable(rows, opts.showMax);
     return out;
@@ -165,6 +193,28 @@ std::string robotJson(const TRobotErrors& e) {
     return o.str();
 }
 
+std::string jsonArray(const std::vector<double>& v) {
+    std::string o = "[";
+    for (size_t i = 0; i < v.size(); i++) o += (i ? "," : "") + jsonNum(v[i]);
+    return o + "]";
+}
+
+/** Window means, NaN (null) where a window has no pose. */
+std::vector<double> meanDists(const std::vector<TErrorStats>& v) {
+    std::vector<double> o;
+    for (const auto& s : v) o.push_back(s.count ? s.mean_dist : std::nan(""));
+    return o;
+}
+
+std::string segmentsJson(const TEvalResult& r) {
+    std::string o = "\"segments\":{\"t\":" + jsonArray(r.segmentBounds);
+    if (!r.robotSegments.empty())
+        o += ",\"robot_mean_dist\":" + jsonArray(meanDists(r.robotSegments));
+    if (!r.odometrySegments.empty())
+        o += ",\"dead_reckoning_mean_dist\":" + jsonArray(meanDists(r.odometrySegments));
+    return o + "}";
+}
+
 std::string mapJson(const TMapErrors& m) {
     const auto& s = m.stats;
     const std::string p = pluralKey(m.kind);
@@ -190,6 +240,7 @@ std::string toJson(const TEvalResult& r) {
     if (r.robot) o += ",\"robot\":" + robotJson(*r.robot);
     if (r.odometry) o += ",\"dead_reckoning\":" + robotJson(*r.odometry);
     if (r.map) o += "," + mapJson(*r.map);
+    if (!r.segmentBounds.empty()) o += "," + segmentsJson(r);
     return o + "}";
 }
 

@@ -18,6 +18,7 @@ struct TArgs {
     std::string path, gtPath, map, gtMap, rawlog, label, plot, errorPlot, title, jsonFile,
         kind;
     bool jsonOnly = false, noOdometry = false, ids = false, atGtTimes = false;
+    int segments = 0;
 };
 
 /** Option combinations TCLAP cannot express. */
@@ -26,6 +27,12 @@ void validate(const TArgs& a) {
         throw std::invalid_argument("--path needs --gt-path (the ground-truth path)");
     if (!a.errorPlot.empty() && a.path.empty())
         throw std::invalid_argument("--error-plot needs --path and --gt-path");
+    if (a.segments < 0)
+        throw std::invalid_argument(
+            "--segments must be a positive number of windows, not " +
+            std::to_string(a.segments));
+    if (a.segments > 0 && a.path.empty())
+        throw std::invalid_argument("--segments needs --path and --gt-path");
     if (!a.map.empty() && a.gtMap.empty())
         throw std::invalid_argument("--map needs --gt-map (the ground-truth map)");
     if (a.path.empty() && a.map.empty())
@@ -91,6 +98,11 @@ TArgs parse(int argc, char** argv) {
         "OUT.png", cmd);
     TCLAP::ValueArg<std::string> title("", "title", "figure title (default: the label)",
                                        false, "", "TEXT", cmd);
+    TCLAP::ValueArg<int> segments(
+        "", "segments",
+        "also give the robot's mean error in N equal windows of the ground truth's "
+        "time span (e.g. the laps of a loop)",
+        false, 0, "N", cmd);
     TCLAP::SwitchArg ids("", "ids", "write landmark IDs on the figure", cmd);
     TCLAP::ValueArg<std::string> jsonFile("", "json-file",
                                           "also write the JSON line to "
@@ -107,6 +119,7 @@ TArgs parse(int argc, char** argv) {
     a.noOdometry = noOdom.getValue(), a.ids = ids.getValue();
     a.atGtTimes = atGt.getValue();
     a.errorPlot = errorPlot.getValue();
+    a.segments = segments.getValue();
     validate(a);
     return a;
 }
@@ -124,6 +137,16 @@ void addPassedOver(TMapErrors& m, const rfir::common::TMapFile& est,
                   << (m.kind == TMapEntry::Kind::Tag ? "RFID reader"
                                                      : "range-bearing sensor")
                   << ": no passed-over count\n";
+}
+
+/** --segments: windows over the ground truth's time span. */
+void addSegments(TEvalResult& r, const rfir::common::TPath2D& gt, size_t n) {
+    const double t0 = gt.front().t, t1 = gt.back().t;
+    if (!(t1 > t0))
+        throw std::runtime_error("--segments: the ground-truth path spans no time");
+    for (size_t k = 0; k <= n; k++) r.segmentBounds.push_back(t0 + (t1 - t0) * k / n);
+    r.robotSegments = segmentStats(r.robot->perPose, t0, t1, n);
+    if (r.odometry) r.odometrySegments = segmentStats(r.odometry->perPose, t0, t1, n);
 }
 
 void writeErrorPlot(const std::string& png, const TEvalResult& r,
@@ -175,6 +198,7 @@ int run(const TArgs& a) {
         r.odometry = computeRobotErrors(dr, gt, assoc);
         fig.odomPath = dr;
     }
+    if (a.segments > 0) addSegments(r, gt, size_t(a.segments));
     if (!a.gtMap.empty()) fig.gtMap = rfir::common::loadMapFile(a.gtMap);
     if (!a.map.empty()) {
         fig.estMap = rfir::common::loadMapFile(a.map);

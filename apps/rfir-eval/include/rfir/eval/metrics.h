@@ -99,6 +99,15 @@ TRobotErrors computeRobotErrors(const rfir::common::TPath2D& est,
 /** Statistics of a set of per-pose errors (e.g. a time window of perPose). */
 TErrorStats statsOf(const std::vector<TPoseError>& errs);
 
+/** Statistics per time window: [t0, t1] cut into n equal windows (the last
+ * one closed); an error at time t goes to window floor(n (t - t0) / (t1 -
+ * t0)), clamped to the first or last window when t lies outside [t0, t1]. A
+ * window with no pose has count 0. Throws std::invalid_argument if n == 0 or
+ * t1 <= t0. For instance the laps of a loop run: where a filter's error comes
+ * from (the first lap's drift, or what it keeps later). */
+std::vector<TErrorStats> segmentStats(const std::vector<TPoseError>& errs, double t0,
+                                      double t1, size_t n);
+
 /** Map errors for the landmarks of one kind, associated by ID. Without `kind`,
  * the kind of the estimated entries (Tag if the estimate is empty); throws
  * std::runtime_error if the estimate mixes tags and landmarks and no kind is

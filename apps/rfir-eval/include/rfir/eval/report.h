@@ -15,6 +15,11 @@ struct TEvalResult {
     /** Dead reckoning on the same data (odometry aligned at the start pose). */
     std::optional<TRobotErrors> odometry;
     std::optional<TMapErrors> map;
+    /** Time windows (rfir-eval --segments): n + 1 bounds [s], and the mean
+     * and max per window of the robot's and of dead reckoning's errors
+     * (segmentStats); empty when not asked for. */
+    std::vector<double> segmentBounds;
+    std::vector<TErrorStats> robotSegments, odometrySegments;
 };
 
 struct TTableOptions {
@@ -23,8 +28,9 @@ struct TTableOptions {
 
 /** Plain-text tables, one row per result: robot x, y [mm], theta [rad], dr [mm]
  * (mean, then max), then map x, y, dt [mm] with mapped / passed-over / total
- * counts. A result's `odometry` adds a row "<label> odometry". Sections with
- * no data in any row are left out. */
+ * counts. A result's `odometry` adds a row "<label> odometry". Time windows
+ * add a table of the mean distance error per window after the robot's.
+ * Sections with no data in any row are left out. */
 std::string formatErrorTable(const std::vector<TEvalResult>& rows,
                              const TTableOptions& opts = {});
 
@@ -34,7 +40,9 @@ std::string formatErrorTable(const std::vector<TEvalResult>& rows,
  * "dead_reckoning": same keys; for a map of kind K with plural P ("tags",
  * "landmarks", "emitters"): P: {"count","mean_dx","mean_dy","mean_dist",
  * "max_dx","max_dy","max_dist"}, "P_mapped", "P_total", "P_unknown_ids",
- * "P_passed_over" and "P_mapped_of_passed_over" (null when unknown).
+ * "P_passed_over" and "P_mapped_of_passed_over" (null when unknown);
+ * with time windows, "segments": {"t": bounds, "robot_mean_dist": [...],
+ * "dead_reckoning_mean_dist": [...]} (null for a window with no pose).
  * Absent parts are omitted. */
 std::string toJson(const TEvalResult& r);
 

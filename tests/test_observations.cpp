@@ -71,4 +71,11 @@ TEST(Observations, HeaderRoundTrip)
     EXPECT_DOUBLE_EQ(b->startPose->phi(), 0.5);
     EXPECT_EQ(b->landmarkName(1), "B7");
     EXPECT_EQ(b->landmarkName(5), "5");
+    // A start facing -x reads back as written: pi, not -pi (CPose2D's
+    // constructor would normalize it).
+    h.startPose->phi(M_PI);
+    b = roundTrip(h);
+    ASSERT_TRUE(b && b->startPose);
+    EXPECT_EQ(b->startPose->phi(), M_PI);
+    EXPECT_EQ(b->startPose->x(), 1.0);
 }

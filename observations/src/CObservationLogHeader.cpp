@@ -61,7 +61,12 @@ void CObservationLogHeader::serializeFrom(mrpt::serialization::CArchive& in,
             {
                 double x, y, phi;
                 in >> x >> y >> phi;
-                startPose = mrpt::poses::CPose2D(x, y, phi);
+                // Set field by field: CPose2D(x, y, phi) normalizes a
+                // heading of pi to -pi, and the pose must read back as written.
+                startPose.emplace();
+                startPose->x(x);
+                startPose->y(y);
+                startPose->phi(phi);
             }
             rbLandmarkNames.resize(in.ReadAs<uint32_t>());
             for (auto& n : rbLandmarkNames) in >> n;

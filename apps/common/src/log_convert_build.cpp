@@ -82,12 +82,9 @@ TTextLogHeader fromLogHeader(const CObservationLogHeader& o) {
     h.readers = o.readers;
     h.receivers = o.receivers;
     h.rbSensor = o.rbSensor;
-    // A header read from a file has a start heading of pi wrapped to -pi,
-    // which the text cannot hold: it is pi again.
     if (o.startPose)
-        h.start = TTextLogHeader::TStart{
-            o.startPose->x(), o.startPose->y(),
-            o.startPose->phi() == -M_PI ? M_PI : o.startPose->phi()};
+        h.start = TTextLogHeader::TStart{o.startPose->x(), o.startPose->y(),
+                                         o.startPose->phi()};
     return h;
 }
 

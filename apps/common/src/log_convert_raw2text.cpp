@@ -6,7 +6,6 @@
 #include <rfir/common/log_convert.h>
 #include <rfir/common/rawlog_io.h>
 
-#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -32,18 +31,6 @@ T textAngle(T a) {
     if (!(double(a) > -M_PI)) a = std::nextafter(T(M_PI), T(0));
     while (!(double(a) <= M_PI)) a = std::nextafter(a, T(0));
     return a;
-}
-
-/** `h` as a reader gets it from a file: reading wraps a start heading of pi
- * to -pi, so the header read is compared with the rebuilt one read back. */
-CObservationLogHeader readBack(const CObservationLogHeader& h) {
-    mrpt::io::CMemoryStream m;
-    auto a = mrpt::serialization::archiveFrom(m);
-    a << h;
-    m.Seek(0);
-    CObservationLogHeader r;
-    a >> r;
-    return r;
 }
 
 class CRawToText {
@@ -258,7 +245,7 @@ TConvertReport CRawToText::run(std::ostream& out, size_t expected) {
     // first instant's); everything else must come back exactly.
     auto rebuilt = toLogHeader(th, hdr.rbLandmarkNames, 0);
     rebuilt.timestamp = hdr.timestamp;
-    if (!sameSerialization(hdr, readBack(rebuilt)))
+    if (!sameSerialization(hdr, rebuilt))
         lossy("log header sensor label (or no rfir log header)");
     std::ostringstream hs;
     writeTextLogHeader(hs, th);

@@ -22,6 +22,13 @@ const std::string kBin = std::string(RFIR_BINARY_DIR) + "/bin/";
 const std::string kDir =
     std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_apps_" + std::to_string(::getpid());
 const bool kDirMade = (fs::create_directories(kDir), true);
+// Removed when the process ends (kDir, defined before, is destroyed after).
+struct TDirRemover {
+    ~TDirRemover() {
+        std::error_code ec;
+        fs::remove_all(kDir, ec);
+    }
+} kDirRemover;
 
 std::string slurp(const std::string& p) {
     std::ifstream f(p);

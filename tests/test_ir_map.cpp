@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <unistd.h>
 
@@ -20,11 +21,20 @@ using namespace rfir::maps;
 using rfir::obs::CObservationIRSignals;
 
 namespace {
+/** This process's folder, made on first use and removed when the process
+ * ends. */
 std::string tmpDir() {
-    const std::string d = std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_map_" +
-                          std::to_string(::getpid());
-    std::system(("mkdir -p '" + d + "'").c_str());
-    return d;
+    struct TDir {
+        std::string path = std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_map_" +
+                           std::to_string(::getpid());
+        TDir() { std::filesystem::create_directories(path); }
+        ~TDir() {
+            std::error_code ec;
+            std::filesystem::remove_all(path, ec);
+        }
+    };
+    static const TDir d;
+    return d.path;
 }
 
 std::string writeFile(const std::string& name, const std::string& text) {

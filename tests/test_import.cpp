@@ -261,6 +261,32 @@ TEST(Import, ExportIsStrictUnlessLossy) {
     EXPECT_EQ(log.records[1].codes, (std::vector<uint8_t>{2, 5}));
 }
 
+TEST(Import, StartHeadingPiEitherWay) {
+    // pi written exactly (the import, rfir-sim) or as -pi (MRPT's CPose2D(x,
+    // y, pi), another program): both export to `start 1 2 pi`, not lossy.
+    for (const double phi : {M_PI, -M_PI}) {
+        TmpDir d;
+        CObservationLogHeader h;
+        h.readers = {{"R0", 0, 0, 0.03, 0.03}};
+        h.startPose.emplace();
+        h.startPose->x(1);
+        h.startPose->y(2);
+        h.startPose->phi(phi);
+        {
+            CRawlogWriter w(d / "x.rawlog", h);
+            w.writeStep(1, exactPose(0, 0, 0), {});
+            w.close();
+        }
+        EXPECT_EQ(CRawlogReader(d / "x.rawlog").header().startPose->phi(), phi);
+        convertRawlogToTextLog(d / "x.rawlog", d / "x.txt");
+        const auto log = readTextLog(d / "x.txt");
+        ASSERT_TRUE(log.header.start);
+        EXPECT_EQ(log.header.start->phi, M_PI) << phi;
+        convertTextLogToRawlog(d / "x.txt", d / "y.rawlog");
+        EXPECT_EQ(CRawlogReader(d / "y.rawlog").header().startPose->phi(), M_PI);
+    }
+}
+
 TEST(Import, ExportRefusesWhatTheTextWouldChange) {
     TmpDir d;
     CObservationLogHeader h;

@@ -82,9 +82,12 @@ TTextLogHeader fromLogHeader(const CObservationLogHeader& o) {
     h.readers = o.readers;
     h.receivers = o.receivers;
     h.rbSensor = o.rbSensor;
+    // A heading of -pi (MRPT's CPose2D(x, y, pi) gives it) is pi in the text,
+    // whose angles are in (-pi, pi].
     if (o.startPose)
-        h.start = TTextLogHeader::TStart{o.startPose->x(), o.startPose->y(),
-                                         o.startPose->phi()};
+        h.start = TTextLogHeader::TStart{
+            o.startPose->x(), o.startPose->y(),
+            o.startPose->phi() == -M_PI ? M_PI : o.startPose->phi()};
     return h;
 }
 

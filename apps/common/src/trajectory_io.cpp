@@ -7,14 +7,24 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace rfir::common
-{
-void saveTUM(const std::string& path, const TPath2D& traj)
-{
+namespace rfir::common {
+namespace {
+double wrap(double a) {
+    a = std::remainder(a, 2 * M_PI);  // [-pi, pi]
+    return a <= -M_PI ? a + 2 * M_PI : a;
+}
+}  // namespace
+
+mrpt::poses::CPose2D interpolatePose2D(const mrpt::poses::CPose2D& a,
+                                       const mrpt::poses::CPose2D& b, double s) {
+    const double phi = a.phi() + s * wrap(b.phi() - a.phi());
+    return {a.x() + s * (b.x() - a.x()), a.y() + s * (b.y() - a.y()), wrap(phi)};
+}
+
+void saveTUM(const std::string& path, const TPath2D& traj) {
     writeFileAtomically(path, [&](std::ostream& o) {
         o << "# t x y z qx qy qz qw\n" << std::fixed;
-        for (const auto& p : traj)
-        {
+        for (const auto& p : traj) {
             const double h = 0.5 * p.pose.phi();
             o << std::setprecision(6) << p.t << " " << std::setprecision(6) << p.pose.x()
               << " " << p.pose.y() << " 0 0 0 " << std::setprecision(9) << std::sin(h)
@@ -23,14 +33,12 @@ void saveTUM(const std::string& path, const TPath2D& traj)
     });
 }
 
-TPath2D loadTUM(const std::string& path)
-{
+TPath2D loadTUM(const std::string& path) {
     std::ifstream f(path);
     if (!f) throw std::runtime_error(path + ": cannot open TUM trajectory file");
     TPath2D out;
     std::string line;
-    for (int ln = 1; std::getline(f, line); ln++)
-    {
+    for (int ln = 1; std::getline(f, line); ln++) {
         const auto hash = line.find('#');
         if (hash != std::string::npos) line.resize(hash);
         std::istringstream s(line);
@@ -38,12 +46,17 @@ TPath2D loadTUM(const std::string& path)
         int n = 0;
         std::string tok;
         bool bad = false;
-        while (s >> tok)
-        {
-            if (n >= 8) { bad = true; break; }
+        while (s >> tok) {
+            if (n >= 8) {
+                bad = true;
+                break;
+            }
             char* end = nullptr;
             v[n] = std::strtod(tok.c_str(), &end);
-            if (*end || !std::isfinite(v[n])) { bad = true; break; }
+            if (*end || !std::isfinite(v[n])) {
+                bad = true;
+                break;
+            }
             n++;
         }
         if (n == 0 && !bad) continue;

@@ -29,11 +29,7 @@ std::optional<mrpt::poses::CPose2D> interpolatePose(const TPath2D& gt, double t)
     const auto& a = *(it - 1);
     if (std::abs(a.t - t) <= kTimeTol) return a.pose;
     const auto& b = *it;
-    const double s = (t - a.t) / (b.t - a.t);
-    const double phi = a.pose.phi() + s * wrapToPi(b.pose.phi() - a.pose.phi());
-    return mrpt::poses::CPose2D(a.pose.x() + s * (b.pose.x() - a.pose.x()),
-                                a.pose.y() + s * (b.pose.y() - a.pose.y()),
-                                wrapToPi(phi));
+    return rfir::common::interpolatePose2D(a.pose, b.pose, (t - a.t) / (b.t - a.t));
 }
 
 void checkPath(const TPath2D& p, const std::string& what) {

@@ -27,11 +27,8 @@ void forEachSample(const TPath2D& path, double step, double reach, double maxGap
             const double dphi = wrapToPi(b.phi() - a.phi());
             const int n =
                 d > maxGap ? 1 : int(std::ceil((d + reach * std::abs(dphi)) / step));
-            for (int k = 1; k < n; k++) {
-                const double s = double(k) / n;
-                fn(CPose2D(a.x() + s * (b.x() - a.x()), a.y() + s * (b.y() - a.y()),
-                           wrapToPi(a.phi() + s * dphi)));
-            }
+            for (int k = 1; k < n; k++)
+                fn(rfir::common::interpolatePose2D(a, b, double(k) / n));
         }
         fn(b);
     }

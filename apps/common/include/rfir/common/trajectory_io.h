@@ -7,14 +7,17 @@
 #include <string>
 #include <vector>
 
-namespace rfir::common
-{
-struct TStampedPose2D
-{
+namespace rfir::common {
+struct TStampedPose2D {
     double t = 0;
     mrpt::poses::CPose2D pose;
 };
 using TPath2D = std::vector<TStampedPose2D>;
+
+/** The pose a fraction s (0: a, 1: b) of the way from a to b: x and y
+ * linear, the heading along the shorter arc, wrapped to (-pi, pi]. */
+mrpt::poses::CPose2D interpolatePose2D(const mrpt::poses::CPose2D& a,
+                                       const mrpt::poses::CPose2D& b, double s);
 
 /** Writes atomically. */
 void saveTUM(const std::string& path, const TPath2D& traj);

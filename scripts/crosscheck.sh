@@ -30,6 +30,7 @@ done
 declare -A SC=(
   [loop60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150"
   [async60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150 --async"
+  [slow60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150 --async --odom-hz 5"
   [epoch60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150 --t0 1700000000"
   [rect4]="--layout grid4_rect --density 16 --path random --area 4x4 --duration 150"
   [line100]="--layout line3 --density 100 --path random --area 3x3 --duration 150"
@@ -39,7 +40,7 @@ declare -A SC=(
   [kid60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 200 --kidnap 90"
   [kid300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 200 --kidnap 100"
 )
-ORDER="loop60 async60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300"
+ORDER="loop60 async60 slow60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300"
 [ -n "$ONLY" ] && ORDER=${ONLY//,/ }
 [[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
 for sc in $ORDER; do

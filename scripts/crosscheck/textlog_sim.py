@@ -20,7 +20,9 @@ ap.add_argument("--omega", type=float, default=0.0, help="spin while moving, rad
 ap.add_argument("--sigma_xy", type=float, default=0.01, help="odometry, m per sqrt(m)")
 ap.add_argument("--sigma_phi", type=float, default=0.005, help="odometry, rad per sqrt(m)")
 ap.add_argument("--async", dest="async_", action="store_true",
-                help="odometry at 50 Hz, each reader polled at its own time")
+                help="odometry at --odom-hz, each reader polled at its own time")
+ap.add_argument("--odom-hz", type=float, default=50.0,
+                help="odometry rate with --async (default 50)")
 ap.add_argument("--t0", type=float, default=0.0, help="first timestamp, s")
 ap.add_argument("--kidnap", type=float, default=-1,
                 help="at this time the robot is carried 2 s (no records) to a random spot")
@@ -80,7 +82,7 @@ def waypoints():
 
 x, y, th = (float(v) for v in a.start.split(","))
 ox, oy, oth = 0.0, 0.0, 0.0  # odometry frame = start pose
-dt_odom = 0.02 if a.async_ else 0.1
+dt_odom = 1.0 / a.odom_hz if a.async_ else 0.1
 lines = ["format textlog 1", f"# foreign simulator seed {a.seed} layout {a.layout}"]
 for r in readers:
     lines.append(f"reader {r[0]} {r[1]:.6f} {r[2]:.6f} {r[3]} {r[4]}")

@@ -46,8 +46,9 @@ size_t expectSameSums(const CRFIDTagParticleMap& m, const mrpt::obs::CObservatio
                       const mrpt::math::TPose2D& at, size_t knownReads) {
     CRFIDTagParticleMap::TRobotReads r;
     EXPECT_TRUE(m.resolveRobotReads(o, r));
-    if (m.likelihoodOptions.robotUpdate == TRobotUpdatePolicy::Literal)
+    if (m.likelihoodOptions.robotUpdate == TRobotUpdatePolicy::Literal) {
         EXPECT_EQ(r.reads.size(), knownReads);
+    }
     for (int k = 0; k < 25; k++) {
         const mrpt::poses::CPose2D p(at.x + 0.004 * (k % 5 - 2),
                                      at.y + 0.004 * (k / 5 - 2), at.phi + 0.3 * (k - 12));

@@ -175,11 +175,12 @@ double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
                                                     const double* plainTerms) const {
     double sum = 0;
     if (!r.rangeBearing) {
+        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
         for (const auto& rd : r.reads)
             sum += plainTerms && rd.plainCurrent
                        ? plainTerms[rd.known]
-                       : Impl::robotReadLogLik(*this, *rd.est, *rd.sample, robot, rd.area,
-                                               r.det);
+                       : Impl::robotReadLogLik(*this, *rd.est, *rd.sample, robot, c, s,
+                                               rd.area, r.det);
         return sum;
     }
     const auto sensor = Impl::sensorPose(r.sensorX, r.sensorY, r.sensorYaw, robot);

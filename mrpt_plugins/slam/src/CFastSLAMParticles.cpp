@@ -82,17 +82,10 @@ void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     drawMotion(action, m_particles,
                [](auto& p) -> mrpt::poses::CPose2D& { return p.d.pose; });
-    lastMaxLogLik_ = 0;
     if (!detections_ || detections_->empty()) return;
     std::vector<size_t> idx;
     for (const auto& d : *detections_) idx.push_back(indexOf(d));
-    double best = -1e300;
-    for (auto& p : m_particles) {
-        const double ll = updateParticle(p.d, idx);
-        p.log_w += ll;
-        best = std::max(best, ll);
-    }
-    lastMaxLogLik_ = best / double(detections_->size());
+    for (auto& p : m_particles) p.log_w += updateParticle(p.d, idx);
 }
 
 mrpt::poses::CPose2D CFastSLAMParticles::meanPose() const {

@@ -23,7 +23,6 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
                                        start.y() + rng.drawGaussian1D(0, stdXY),
                                        start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
-    lastLL_.clear();
 }
 
 mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
@@ -91,15 +90,12 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     // Gaussian per particle.
     drawMotion(action, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; });
     if (afterMotion) afterMotion();
-    lastLL_.clear();
     if (!logLikelihood) return;
-    lastLL_.resize(m_particles.size());
     for (size_t i = 0; i < m_particles.size(); i++) {
         const double ll = logLikelihood(i, m_particles[i].d);
         if (!std::isfinite(ll))
             throw std::runtime_error(
                 "the landmark map returned a non-finite log-likelihood");
-        lastLL_[i] = ll;
         m_particles[i].log_w += ll;
     }
 }

@@ -59,8 +59,6 @@ class CFastSLAMParticles
     /** Per landmark, the weighted mixture of the particles' EKFs. */
     std::vector<TLandmarkEstimate> landmarks() const;
     size_t landmarkCount() const { return names_.size(); }
-    /** Mean log-likelihood of the last step's detections (best particle). */
-    double lastMaxLogLik() const { return lastMaxLogLik_; }
 
   protected:
     void prediction_and_update_pfStandardProposal(
@@ -77,7 +75,6 @@ class CFastSLAMParticles
     std::map<std::string, size_t> index_;
     std::vector<std::string> names_;
     std::vector<bool> isTag_;
-    double lastMaxLogLik_ = 0;
 };
 
 }  // namespace rfir::slam

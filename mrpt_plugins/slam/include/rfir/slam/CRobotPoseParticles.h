@@ -34,8 +34,6 @@ class CRobotPoseParticles
     std::function<void()> afterMotion;
 
     mrpt::poses::CPose2D meanPose() const;
-    /** Per-particle log-likelihoods of the last weighing (empty if none). */
-    const std::vector<double>& lastLogLik() const { return lastLL_; }
 
     /** Replaces particle i's pose, giving it the current best weight (sensor
      * resetting). */
@@ -58,9 +56,6 @@ class CRobotPoseParticles
         const mrpt::obs::CActionCollection* action,
         const mrpt::obs::CSensoryFrame* observation,
         const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o) override;
-
-  private:
-    std::vector<double> lastLL_;
 };
 
 }  // namespace rfir::slam

@@ -8,17 +8,15 @@
 #include <stdexcept>
 
 namespace rfir::common {
-namespace {
-double wrap(double a) {
+double wrapToPi(double a) {
     a = std::remainder(a, 2 * M_PI);  // [-pi, pi]
     return a <= -M_PI ? a + 2 * M_PI : a;
 }
-}  // namespace
 
 mrpt::poses::CPose2D interpolatePose2D(const mrpt::poses::CPose2D& a,
                                        const mrpt::poses::CPose2D& b, double s) {
-    const double phi = a.phi() + s * wrap(b.phi() - a.phi());
-    return {a.x() + s * (b.x() - a.x()), a.y() + s * (b.y() - a.y()), wrap(phi)};
+    const double phi = a.phi() + s * wrapToPi(b.phi() - a.phi());
+    return {a.x() + s * (b.x() - a.x()), a.y() + s * (b.y() - a.y()), wrapToPi(phi)};
 }
 
 void saveTUM(const std::string& path, const TPath2D& traj) {

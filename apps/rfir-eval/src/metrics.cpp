@@ -13,12 +13,6 @@ namespace {
 constexpr double kTimeTol = 1e-6;  // s: stamps written with 6 decimals in TUM
 }
 
-double wrapToPi(double a) {
-    a = std::remainder(a, 2 * M_PI);  // [-pi, pi]
-    if (a <= -M_PI) a += 2 * M_PI;
-    return a;
-}
-
 std::optional<mrpt::poses::CPose2D> interpolatePose(const TPath2D& gt, double t) {
     if (gt.empty() || t < gt.front().t - kTimeTol || t > gt.back().t + kTimeTol)
         return std::nullopt;

@@ -14,8 +14,12 @@ struct TStampedPose2D {
 };
 using TPath2D = std::vector<TStampedPose2D>;
 
+/** Wraps an angle to (-pi, pi] (the text format's range; MRPT's
+ * mrpt::math::wrapToPi gives [-pi, pi)). */
+double wrapToPi(double a);
+
 /** The pose a fraction s (0: a, 1: b) of the way from a to b: x and y
- * linear, the heading along the shorter arc, wrapped to (-pi, pi]. */
+ * linear, the heading along the shorter arc (stored by CPose2D in [-pi, pi)). */
 mrpt::poses::CPose2D interpolatePose2D(const mrpt::poses::CPose2D& a,
                                        const mrpt::poses::CPose2D& b, double s);
 

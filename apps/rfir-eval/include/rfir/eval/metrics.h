@@ -62,8 +62,8 @@ struct TMapErrors {
     std::optional<size_t> mappedOfPassedOver;
 };
 
-/** Wraps an angle to (-pi, pi]. */
-double wrapToPi(double a);
+/** Wraps an angle to (-pi, pi] (one definition, in rfir_appcommon). */
+using rfir::common::wrapToPi;
 
 /** Ground-truth pose at time t: linear interpolation of x, y and shortest-arc
  * interpolation of the heading between the two bracketing poses (exact when t

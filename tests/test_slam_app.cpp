@@ -155,4 +155,5 @@ TEST(SlamApp, SmoothWritesItsOutputs) {
     const auto r2 = run("--rawlog " + rb + "/run.rawlog --out-dir " + rb + "/o --smooth");
     EXPECT_NE(r2.code, 0) << r2.out;
     EXPECT_NE(r2.out.find("range-bearing"), std::string::npos) << r2.out;
+    EXPECT_FALSE(mrpt::system::fileExists(rb + "/o/path.tum"));  // refused up front
 }

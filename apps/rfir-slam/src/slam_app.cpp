@@ -182,11 +182,6 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
                                                       const TTruth& truth,
                                                       const mrpt::poses::CPose2D& start,
                                                       const rfir::slam::TSlamRun& run) {
-    for (const auto& in : data.inputs)
-        if (in.rb)
-            throw std::runtime_error(
-                "--smooth: " + a.rawlog +
-                " has range-bearing observations; the smoother uses RFID reads only");
     rfir::slam::TGraphSmootherParams p;
     p.motion = cfg.motion;
     std::cerr << "rfir-slam: smoothing " << run.path.size() << " poses offline\n";
@@ -219,6 +214,13 @@ int runSlamApp(const TAppArgs& args) {
     std::cerr << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "
               << ini << ", seed " << a.seed << ")\n";
     const TLoaded data = readInputs(a.rawlog);
+    // Refused before the filter runs and anything is written.
+    if (a.smooth)
+        for (const auto& in : data.inputs)
+            if (in.rb)
+                throw std::runtime_error(
+                    "--smooth: " + a.rawlog +
+                    " has range-bearing observations; the smoother uses RFID reads only");
     const mrpt::poses::CPose2D start =
         a.start ? *a.start : data.header.startPose.value_or(mrpt::poses::CPose2D());
     auto engine = rfir::slam::makeEngine(cfg, data.header);

@@ -235,6 +235,32 @@ TEST(RawlogIO, RawlogWithoutHeaderIsReadWithAnEmptyHeader) {
     EXPECT_FALSE(r.next(st));
 }
 
+TEST(RawlogIO, FirstMovementKeptUnlessZero) {
+    // Another program's rawlog: the first odometry record comes with a real
+    // movement, which the reader keeps (only the writer's zero anchor goes).
+    TmpDir d;
+    const auto path = d / "m.rawlog";
+    {
+        mrpt::io::CFileGZOutputStream f(path);
+        auto ar = mrpt::serialization::archiveFrom(f);
+        mrpt::obs::CActionCollection acts;
+        mrpt::obs::CActionRobotMovement2D mv;
+        mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0, 0), {});
+        acts.insert(mv);
+        mrpt::obs::CSensoryFrame sf;
+        auto od = mrpt::obs::CObservationOdometry::Create();
+        od->timestamp = mrpt::Clock::fromDouble(3);
+        od->odometry = exactPose(1, 2, 0);
+        sf.insert(od);
+        ar << acts << sf;
+    }
+    CRawlogReader r(path);
+    TRawlogStep st;
+    ASSERT_TRUE(r.next(st));
+    ASSERT_TRUE(st.odometryIncrement);
+    EXPECT_EQ(st.odometryIncrement->x(), 0.1);
+}
+
 TEST(RawlogIO, NotARawlogIsRejected) {
     TmpDir d;
     std::ofstream(d / "g.rawlog") << "format textlog 1\n";

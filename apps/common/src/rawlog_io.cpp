@@ -206,12 +206,15 @@ bool CRawlogReader::next(TRawlogStep& st)
         else if (auto b = std::dynamic_pointer_cast<CObservationBearingRange>(o)) st.rb = b;
     }
     // The writer gives the first odometry record a zero movement (it only
-    // anchors the frame); a filter would still draw motion noise for it.
+    // anchors the frame); a filter would still draw motion noise for it. A
+    // real first movement (another program's rawlog) is kept.
     const bool anchor = st.odometry && !sawOdometry_;
     if (st.odometry) sawOdometry_ = true;
     if (auto mv = acts->getBestMovementEstimation())
     {
-        if (!anchor) st.odometryIncrement = mv->rawOdometryIncrementReading;
+        const auto& inc = mv->rawOdometryIncrementReading;
+        if (!anchor || inc.x() != 0 || inc.y() != 0 || inc.phi() != 0)
+            st.odometryIncrement = inc;
         if (!haveT) st.t = mrpt::Clock::toDouble(mv->timestamp);
     }
     return true;

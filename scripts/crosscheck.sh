@@ -6,11 +6,13 @@
 # row per scenario: mean robot / tag error in mm over the seeds.
 #
 #   bash scripts/crosscheck.sh [--seeds N] [--out DIR] [--config-dir DIR] [--scenarios a,b]
+# --config-dir defaults to config_ini (the stock INIs as in the source tree);
+# relative paths are taken from the repository root.
 # Needs python3 and a build (build/bin); RFIR_BUILD_DIR overrides the build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BIN=${RFIR_BUILD_DIR:-build}/bin
-SEEDS=3; OUT=out/crosscheck; CFGDIR=""; ONLY=""
+SEEDS=3; OUT=out/crosscheck; CFGDIR=config_ini; ONLY=""
 while [ $# -gt 0 ]; do
   case $1 in
     --seeds|--out|--config-dir|--scenarios)
@@ -19,7 +21,7 @@ while [ $# -gt 0 ]; do
         --seeds) SEEDS=$2 ;; --out) OUT=$2 ;; --config-dir) CFGDIR=$2 ;; --scenarios) ONLY=$2 ;;
       esac
       shift 2 ;;
-    -h|--help) sed -n 2,9p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
     *) echo "crosscheck.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
   esac
 done
@@ -43,6 +45,9 @@ declare -A SC=(
 ORDER="loop60 async60 slow60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300"
 [ -n "$ONLY" ] && ORDER=${ONLY//,/ }
 [[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
+for m in pf ps fastslam; do
+  [ -f "$CFGDIR/slam_$m.ini" ] || { echo "crosscheck.sh: $CFGDIR/slam_$m.ini missing (--config-dir)" >&2; exit 2; }
+done
 for sc in $ORDER; do
   [ -n "${SC[$sc]:-}" ] || { echo "crosscheck.sh: unknown scenario '$sc' (known: ${!SC[*]})" >&2; exit 2; }
 done
@@ -57,9 +62,9 @@ for sc in $ORDER; do
     python3 scripts/crosscheck/textlog_sim.py --out "$n" --seed "$s" ${SC[$sc]} >/dev/null
     "$BIN/rfir-import" -q --input "$n.txt" --output "$n.rawlog"
     for m in pf ps fastslam; do
-      cfg=(); [ -n "$CFGDIR" ] && cfg=(--config "$CFGDIR/slam_$m.ini")
-      "$BIN/rfir-slam" --rawlog "$n.rawlog" --method "$m" "${cfg[@]}" --seed "$s" \
-        --out-dir "${n}_$m" > "${n}_$m.log" 2>&1
+      "$BIN/rfir-slam" --rawlog "$n.rawlog" --method "$m" --config "$CFGDIR/slam_$m.ini" \
+        --seed "$s" --out-dir "${n}_$m" > "${n}_$m.log" 2>&1 \
+        || { echo "crosscheck.sh: rfir-slam failed, see ${n}_$m.log" >&2; exit 1; }
       # dead reckoning once per log, with pf
       dr=(); [ "$m" = pf ] || dr=(--no-odometry)
       "$BIN/rfir-eval" --json-only "${dr[@]}" --rawlog "$n.rawlog" --path "${n}_$m/path.tum" \

@@ -6,6 +6,8 @@
 # averaged over the seeds, with dead reckoning.
 #
 #   bash scripts/loop_laps.sh [--seeds N] [--out DIR]
+# Runs the stock INIs as they are in config_ini/ (not the build copy);
+# relative paths are taken from the repository root.
 # Needs python3 and a build (build/bin); RFIR_BUILD_DIR overrides the build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,7 +19,7 @@ while [ $# -gt 0 ]; do
       [ $# -ge 2 ] || { echo "loop_laps.sh: $1 needs a value" >&2; exit 2; }
       [ "$1" = --seeds ] && SEEDS=$2 || OUT=$2
       shift 2 ;;
-    -h|--help) sed -n 2,9p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
     *) echo "loop_laps.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
   esac
 done
@@ -33,7 +35,10 @@ for s in $(seq 1 "$SEEDS"); do
   d="$OUT/seed$s"
   "$BIN/rfir-sim" -q -c "$INI" -o "$d" -n run -s "$s" >/dev/null
   for m in pf ps fastslam; do
-    "$BIN/rfir-slam" --rawlog "$d/run.rawlog" --out-dir "$d/$m" --method "$m" --seed "$s" >/dev/null 2>&1
+    # The source tree's stock INIs (the build's copy is refreshed only by a build).
+    "$BIN/rfir-slam" --rawlog "$d/run.rawlog" --out-dir "$d/$m" --method "$m" \
+      --config "config_ini/slam_$m.ini" --seed "$s" > "$d/$m.log" 2>&1 \
+      || { echo "loop_laps.sh: rfir-slam failed, see $d/$m.log" >&2; exit 1; }
     "$BIN/rfir-eval" --path "$d/$m/path.tum" --gt-path "$d/run.gt.tum" --rawlog "$d/run.rawlog" \
       --segments 3 --json-only --label "$m" > "$d/$m.json"
   done

@@ -10,9 +10,9 @@ import argparse, math, random
 ap = argparse.ArgumentParser()
 ap.add_argument("--out", required=True, help="output prefix")
 ap.add_argument("--layout", default="ring8_60",
-                help="ring8_60 | ring8_300 | grid4_rect | line3 | single")
+                choices=["ring8_60", "ring8_300", "grid4_rect", "line3", "single"])
 ap.add_argument("--density", type=float, default=16, help="tags per m^2 (square grid)")
-ap.add_argument("--path", default="loop", help="loop | random | lawn")
+ap.add_argument("--path", default="loop", choices=["loop", "random", "lawn"])
 ap.add_argument("--area", default="3x3", help="floor W x H, m")
 ap.add_argument("--duration", type=float, default=120, help="s")
 ap.add_argument("--speed", type=float, default=0.2, help="m/s")
@@ -30,7 +30,17 @@ ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--start", default="0.5,0.5,0", help="start pose x,y,phi (the log's start record)")
 a = ap.parse_args()
 rng = random.Random(a.seed)
-W, H = (float(v) for v in a.area.split("x"))
+try:
+    W, H = (float(v) for v in a.area.split("x"))
+except ValueError:
+    ap.error(f"--area must be W x H in metres, e.g. 3x3, not '{a.area}'")
+for name in ("density", "duration", "speed", "odom_hz"):
+    if not getattr(a, name) > 0:
+        ap.error(f"--{name.replace('_', '-')} must be positive")
+if W <= 1.5 or H <= 1.5:
+    ap.error("--area: each side must exceed 1.5 m (the paths keep 0.5 m margins)")
+if a.odom_hz != 50.0 and not a.async_:
+    ap.error("--odom-hz needs --async")
 
 def layout(name):
     if name == "ring8_60":
@@ -43,7 +53,7 @@ def layout(name):
         return [(f"{i}", 0.1, (i - 1) * 0.1, 0.04, 0.04) for i in range(3)]
     if name == "single":
         return [("reader", 0.0, 0.0, 0.05, 0.05)]
-    raise SystemExit("layout?")
+    raise AssertionError(name)  # argparse's choices
 
 readers = layout(a.layout)
 pitch = 1 / math.sqrt(a.density)

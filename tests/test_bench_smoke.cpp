@@ -2,6 +2,8 @@
 // options fail with a message. Nothing here depends on how fast the machine is.
 #include <gtest/gtest.h>
 
+#include "test_tmpdir.h"
+
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <cstdio>
@@ -42,12 +44,6 @@ size_t count(const std::string& s, const std::string& what) {
     return n;
 }
 
-std::string tempDir() {
-    char tmpl[] = "/tmp/rfir_bench_smoke_XXXXXX";
-    const char* d = ::mkdtemp(tmpl);
-    if (!d) throw std::runtime_error("mkdtemp failed");
-    return d;
-}
 
 long fileSize(const std::string& p) {
     struct stat st;
@@ -56,7 +52,8 @@ long fileSize(const std::string& p) {
 }  // namespace
 
 TEST(BenchSmoke, TinyRunReportsEveryCase) {
-    const std::string dir = tempDir();
+    const rfir_test::TmpDir tmp;
+    const std::string dir = tmp.p.string();
     const TRun r =
         run("--quick --m 100 --n 10,100 --updates 5 --realtime-seconds 20 --json " + dir +
                 "/b.json --plots " + dir,
@@ -95,7 +92,8 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
 }
 
 TEST(BenchSmoke, BadOptionsAreRejected) {
-    const std::string dir = tempDir();
+    const rfir_test::TmpDir tmp;
+    const std::string dir = tmp.p.string();
     TRun r = run("--n 5", dir);
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("--n"), std::string::npos) << r.err;

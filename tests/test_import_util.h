@@ -6,6 +6,8 @@
 #include <rfir/common/rawlog_io.h>
 #include <rfir/obs/ir_decoder.h>
 
+#include "test_tmpdir.h"
+
 #include <gtest/gtest.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -27,18 +29,6 @@ namespace rfir_test {
 inline const std::string kFull =
     std::string(RFIR_SOURCE_DIR) + "/tests/data/textlog/full.txt";
 
-struct TmpDir {
-    fs::path p;
-    TmpDir() {
-        static int n = 0;
-        p = fs::temp_directory_path() /
-            ("rfir_import_" + std::to_string(getpid()) + "_" + std::to_string(n++));
-        fs::create_directories(p);
-    }
-    ~TmpDir() { fs::remove_all(p); }
-    std::string operator/(const std::string& f) const { return (p / f).string(); }
-    size_t count() const { return size_t(std::distance(fs::directory_iterator(p), {})); }
-};
 
 inline std::string slurp(const std::string& path) {
     std::ifstream f(path, std::ios::binary);

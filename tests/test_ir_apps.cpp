@@ -6,29 +6,24 @@
 #include <rfir/ir/id_planner.h>
 #include <rfir/sim/simulator.h>
 
+#include "test_tmpdir.h"
+
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 const std::string kBin = std::string(RFIR_BINARY_DIR) + "/bin/";
 // Per process: ctest runs every test case as its own process, in parallel.
-const std::string kDir =
-    std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_apps_" + std::to_string(::getpid());
-const bool kDirMade = (fs::create_directories(kDir), true);
-// Removed when the process ends (kDir, defined before, is destroyed after).
-struct TDirRemover {
-    ~TDirRemover() {
-        std::error_code ec;
-        fs::remove_all(kDir, ec);
-    }
-} kDirRemover;
+// Removed when the process ends.
+const rfir_test::TmpDir kTmp;
+const std::string kDir = kTmp.p.string();
 
 std::string slurp(const std::string& p) {
     std::ifstream f(p);

@@ -3,6 +3,8 @@
 #include <rfir/maps/CIREmitterMap.h>
 #include <rfir/obs/ir_codes.h>
 
+#include "test_tmpdir.h"
+
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CMultiMetricMap.h>
@@ -12,10 +14,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 using namespace rfir::maps;
 using rfir::obs::CObservationIRSignals;
@@ -24,17 +26,8 @@ namespace {
 /** This process's folder, made on first use and removed when the process
  * ends. */
 std::string tmpDir() {
-    struct TDir {
-        std::string path = std::string(RFIR_BINARY_DIR) + "/tmp_test_ir_map_" +
-                           std::to_string(::getpid());
-        TDir() { std::filesystem::create_directories(path); }
-        ~TDir() {
-            std::error_code ec;
-            std::filesystem::remove_all(path, ec);
-        }
-    };
-    static const TDir d;
-    return d.path;
+    static const rfir_test::TmpDir d;
+    return d.p.string();
 }
 
 std::string writeFile(const std::string& name, const std::string& text) {

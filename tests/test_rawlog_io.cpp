@@ -3,6 +3,8 @@
 #include <rfir/common/log_convert.h>
 #include <rfir/common/rawlog_io.h>
 
+#include "test_tmpdir.h"
+
 #include <gtest/gtest.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -41,14 +43,7 @@ void rfir_test::CUnregisteredObs::serializeFrom(mrpt::serialization::CArchive& i
 }
 
 namespace {
-struct TmpDir {
-    fs::path p =
-        fs::temp_directory_path() / ("rfir_rawlog_io_" + std::to_string(getpid()));
-    TmpDir() { fs::create_directories(p); }
-    ~TmpDir() { fs::remove_all(p); }
-    std::string operator/(const std::string& f) const { return (p / f).string(); }
-    size_t count() const { return size_t(std::distance(fs::directory_iterator(p), {})); }
-};
+using rfir_test::TmpDir;
 
 CObservationLogHeader header() {
     CObservationLogHeader h;

@@ -1,6 +1,8 @@
 // The simulator's INI files: strict keys, clear errors, the stock INIs, the CLI.
 #include <rfir/sim/simulator.h>
 
+#include "test_tmpdir.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -15,12 +17,16 @@ using rfir::sim::TSimConfig;
 
 namespace
 {
+/** This process's folder, removed when it ends. */
+const fs::path& procDir()
+{
+    static const rfir_test::TmpDir d;
+    return d.p;
+}
+
 std::string tmpIni(const std::string& name, const std::string& text)
 {
-    const auto dir = fs::temp_directory_path() /
-                     ("rfir_test_sim_config_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const auto p = (dir / name).string();
+    const auto p = (procDir() / name).string();
     std::ofstream(p) << text;
     return p;
 }
@@ -163,9 +169,7 @@ TEST(SimConfig, StockInisLoadAndRun)
 TEST(SimCli, WritesFilesAndRejectsBadInput)
 {
     const std::string bin = std::string(RFIR_BINARY_DIR) + "/bin/rfir-sim";
-    const auto dir = fs::temp_directory_path() /
-                     ("rfir_test_sim_cli_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
+    const auto dir = procDir() / "cli";
     const auto ini = tmpIni("cli_run.ini", "[simulation]\nmax_duration = 4\n");
     const std::string cmd = bin + " --config " + ini + " --out-dir " + dir.string() +
                             " --seed 3 -q";

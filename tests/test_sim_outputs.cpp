@@ -5,6 +5,8 @@
 #include <rfir/common/trajectory_io.h>
 #include <rfir/sim/simulator.h>
 
+#include "test_tmpdir.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -26,9 +28,16 @@ std::string slurp(const fs::path& p)
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
+/** This process's folder, removed when it ends. */
+const fs::path& procDir()
+{
+    static const rfir_test::TmpDir d;
+    return d.p;
+}
+
 fs::path runTo(const TSimConfig& c, uint64_t seed, const std::string& sub)
 {
-    const auto dir = fs::temp_directory_path() / ("rfir_test_sim_outputs_" + std::to_string(::getpid())) / sub;
+    const auto dir = procDir() / sub;
     fs::remove_all(dir);
     fs::create_directories(dir);
     writeOutputs(simulate(c, seed), dir.string(), "run");
@@ -64,7 +73,7 @@ TEST(SimOutputs, RawlogReadsBackWithGroundTruth)
     auto c = shortMixed();
     c.trajectory.spots = 50;  // one every 0.72 m: a few within the 15 s
     const auto out = simulate(c, 13);
-    const auto dir = fs::temp_directory_path() / ("rfir_test_sim_outputs_" + std::to_string(::getpid())) / "rb";
+    const auto dir = procDir() / "rb";
     fs::create_directories(dir);
     writeOutputs(out, dir.string(), "x");
     rfir::common::CRawlogReader rd((dir / "x.rawlog").string());

@@ -203,6 +203,10 @@ TEST(EvalMetrics, DeadReckoningAlignedAtStart) {
     ASSERT_EQ(dr2.size(), 2u);
     EXPECT_NEAR(dr2[1].pose.x(), 2, 1e-12);
     EXPECT_NEAR(dr2[1].pose.y(), 2, 1e-12);
+    // deadReckoning: from the start when known (even where the truth differs),
+    // else from the truth.
+    EXPECT_NEAR(deadReckoning(odo, CPose2D(0, 0, 0), gt)[1].pose.x(), 1, 1e-12);
+    EXPECT_NEAR(deadReckoning(odo, std::nullopt, gt)[1].pose.x(), 2, 1e-12);
 }
 
 TEST(EvalReport, JsonKeysAndTable) {

@@ -192,4 +192,10 @@ TPath2D alignOdometryAt(const TPath2D& odometry, const mrpt::poses::CPose2D& sta
     return out;
 }
 
+TPath2D deadReckoning(const TPath2D& odometry,
+                      const std::optional<mrpt::poses::CPose2D>& start,
+                      const TPath2D& gt) {
+    return start ? alignOdometryAt(odometry, *start) : alignOdometryAtStart(odometry, gt);
+}
+
 }  // namespace rfir::eval

@@ -192,9 +192,7 @@ int run(const TArgs& a) {
     if (info && !gt.empty() && !a.noOdometry && !info->odometry.empty()) {
         // Dead reckoning from the known start pose (as the filters start), or
         // from the ground truth at the first odometry time.
-        const auto dr = info->startPose
-                            ? alignOdometryAt(info->odometry, *info->startPose)
-                            : alignOdometryAtStart(info->odometry, gt);
+        const auto dr = deadReckoning(info->odometry, info->startPose, gt);
         r.odometry = computeRobotErrors(dr, gt, assoc);
         fig.odomPath = dr;
     }

@@ -78,12 +78,15 @@ TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
     TTruth t;
     if (!a.gtPath) {
         if (a.gtMap)
-            std::cerr << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
+            std::cerr
+                << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
         return t;
     }
     t.path = rfir::common::loadTUM(*a.gtPath);
     if (!info.odometry.empty()) {
-        t.odometry = rfir::eval::alignOdometryAtStart(info.odometry, *t.path);
+        // From where the filter starts, as rfir-eval does.
+        t.odometry = rfir::eval::deadReckoning(
+            info.odometry, a.start ? a.start : info.startPose, *t.path);
         t.odometryErrors = rfir::eval::computeRobotErrors(*t.odometry, *t.path);
     }
     if (a.gtMap) t.map = rfir::common::loadMapFile(*a.gtMap);
@@ -118,8 +121,10 @@ void findGroundTruth(TAppArgs& a) {
 }
 
 /** Errors against the ground truth, if there is one (fig gets the truth). */
-std::optional<rfir::eval::TEvalResult> evaluate(const TTruth& truth, const std::string& label,
-                                                const TPath2D& est, const TMapFile& estMap,
+std::optional<rfir::eval::TEvalResult> evaluate(const TTruth& truth,
+                                                const std::string& label,
+                                                const TPath2D& est,
+                                                const TMapFile& estMap,
                                                 rfir::eval::TMapFigure& fig) {
     if (!truth.path) return std::nullopt;
     const TPath2D& gt = *truth.path;
@@ -134,8 +139,8 @@ std::optional<rfir::eval::TEvalResult> evaluate(const TTruth& truth, const std::
         fig.gtMap = gtm;
         bool anyTag = false;
         for (const auto& e : estMap) anyTag |= e.kind == TMapEntry::Kind::Tag;
-        const auto kind = anyTag || estMap.empty() ? TMapEntry::Kind::Tag
-                                                   : TMapEntry::Kind::Landmark;
+        const auto kind =
+            anyTag || estMap.empty() ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark;
         r.map = rfir::eval::computeMapErrors(estMap, gtm, kind);
         if (kind == TMapEntry::Kind::Tag && !truth.readers.empty())
             rfir::eval::setPassedOver(
@@ -154,12 +159,9 @@ void writeErrors(const std::string& file, const rfir::eval::TEvalResult& r) {
 
 /** path<sfx>.tum, map<sfx>.txt, path_map<sfx>.png and errors<sfx>.json of a
  * run, named `label` in the table, the figure and the map's header. */
-std::optional<rfir::eval::TEvalResult> writeAndScore(const TAppArgs& a,
-                                                     const TTruth& truth,
-                                                     const rfir::slam::TSlamRun& run,
-                                                     const std::string& sfx,
-                                                     const std::string& label,
-                                                     const std::string& legend) {
+std::optional<rfir::eval::TEvalResult> writeAndScore(
+    const TAppArgs& a, const TTruth& truth, const rfir::slam::TSlamRun& run,
+    const std::string& sfx, const std::string& label, const std::string& legend) {
     const TPath2D path = rfir::common::stampedPath(run);
     const TMapFile map = rfir::common::landmarkEntries(run.map);
     rfir::common::saveTUM(a.outDir + "/path" + sfx + ".tum", path);

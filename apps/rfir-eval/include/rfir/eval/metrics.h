@@ -185,4 +185,11 @@ rfir::common::TPath2D alignOdometryAtStart(const rfir::common::TPath2D& odometry
 rfir::common::TPath2D alignOdometryAt(const rfir::common::TPath2D& odometry,
                                       const mrpt::poses::CPose2D& start);
 
+/** The dead-reckoning row's path: from `start` when known (where the filters
+ * start: the header's start pose, or rfir-slam's --start), else from the
+ * ground truth at the first odometry time. */
+rfir::common::TPath2D deadReckoning(const rfir::common::TPath2D& odometry,
+                                    const std::optional<mrpt::poses::CPose2D>& start,
+                                    const rfir::common::TPath2D& gt);
+
 }  // namespace rfir::eval

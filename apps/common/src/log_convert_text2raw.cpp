@@ -29,7 +29,7 @@ void forEachRecord(const std::string& path, const TConvertOptions& opts,
     while (std::getline(f, line)) {
         if (p.parseLine(line, ++n, rec)) onRecord(rec);
         done += line.size() + 1;
-        if (done) prog.update(done - 1);
+        prog.update(done - 1);
     }
     if (f.bad()) throw std::runtime_error(path + ": read error");
     p.finish(n);

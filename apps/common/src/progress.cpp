@@ -6,26 +6,16 @@
 #include <cstdio>
 #include <iostream>
 
-namespace rfir::common
-{
-CProgress::CProgress(std::string what, size_t total, bool enabled)
-    : CProgress(std::move(what), total, enabled ? &std::cerr : nullptr)
-{
-}
-
+namespace rfir::common {
 CProgress::CProgress(std::string what, size_t total, std::ostream* out)
     : what_(std::move(what)),
       total_(std::max<size_t>(1, total)),
       out_(out),
-      enabled_(out != nullptr),
       tty_(out == &std::cerr && ::isatty(STDERR_FILENO) != 0),
-      t0_(std::chrono::steady_clock::now())
-{
-}
+      t0_(std::chrono::steady_clock::now()) {}
 
-void CProgress::update(size_t i)
-{
-    if (!enabled_) return;
+void CProgress::update(size_t i) {
+    if (!out_) return;
     const size_t done = std::min(i + 1, total_);
     // Percent shown: every 1 % on a terminal, every 10 % in a log.
     const size_t step = tty_ ? 1 : 10;
@@ -42,9 +32,8 @@ void CProgress::update(size_t i)
     *out_ << (tty_ ? "\r" : "") << buf << (tty_ ? "" : "\n") << std::flush;
 }
 
-void CProgress::finish()
-{
-    if (enabled_ && tty_ && lastShown_ != size_t(-1)) *out_ << "\n";
+void CProgress::finish() {
+    if (out_ && tty_ && lastShown_ != size_t(-1)) *out_ << "\n";
 }
 
 }  // namespace rfir::common

@@ -77,7 +77,6 @@ std::vector<std::string> parseMethods(const std::string& s) {
     return v;
 }
 
-/** Stores case i of a sweep, keeping the timing of the fastest round. */
 bool skipped(const TCaseResult& c) { return c.skipped; }
 bool skipped(const TFloorResult&) { return false; }
 

@@ -1,5 +1,6 @@
 /* rfir: Gauss-Newton (Levenberg-Marquardt damped) smoothing of a SLAM run over
  * odometry and RFID read factors; see graph_smoother.h. */
+#include <rfir/models/detection_likelihood.h>
 #include <rfir/slam/detections.h>
 #include <rfir/slam/graph_smoother.h>
 
@@ -83,9 +84,9 @@ class CProblem {
             }
             const auto& r = reads_[firstRead_[j]];  // the first reader's centre
             const auto p = s.x.segment<3>(3 * r.k);
-            const double c = std::cos(p[2]), sn = std::sin(p[2]);
-            s.x.segment<2>(tagVar(j)) << p[0] + c * r.cx - sn * r.cy,
-                p[1] + sn * r.cx + c * r.cy;
+            const auto c =
+                rfir::models::readerCentreInWorld({p[0], p[1], p[2]}, {r.cx, r.cy, 0, 0});
+            s.x.segment<2>(tagVar(j)) << c.x, c.y;
         }
         return s;
     }

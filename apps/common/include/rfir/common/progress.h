@@ -4,29 +4,26 @@
 
 #include <chrono>
 #include <cstddef>
-#include <iosfwd>
+#include <iostream>
 #include <string>
 
-namespace rfir::common
-{
-class CProgress
-{
-public:
-    /** `what` prefixes every line, e.g. "rfir-slam"; total is the step count. */
-    CProgress(std::string what, size_t total, bool enabled = true);
-    /** The same to `out` (nullptr: silent); rewritten in place only when `out`
-     * is std::cerr on a terminal. */
-    CProgress(std::string what, size_t total, std::ostream* out);
+namespace rfir::common {
+class CProgress {
+  public:
+    /** `what` prefixes every line, e.g. "rfir-slam"; total is the step count;
+     * `out` nullptr: silent. Rewritten in place only when `out` is std::cerr
+     * on a terminal. */
+    CProgress(std::string what, size_t total, std::ostream* out = &std::cerr);
     /** Call after step i (0-based) is done; prints only when the display changes. */
     void update(size_t i);
     /** Ends the line on a terminal. */
     void finish();
 
-private:
+  private:
     std::string what_;
     size_t total_, lastShown_ = size_t(-1);
     std::ostream* out_;
-    bool enabled_, tty_;
+    bool tty_;
     std::chrono::steady_clock::time_point t0_;
 };
 

@@ -266,6 +266,11 @@ TEST(TagMap, RobotLikelihoodOverTagParticles) {
     m.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagMean;
     EXPECT_EQ(m.computeObservationLikelihood(*o, pose3(robot)),
               det.logLikelihood(robot, r, t->estimate.mean));
+    // K set in code above the weighing's bound: refused, not cut to 64.
+    CRFIDTagParticleMap big;
+    big.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagParticles;
+    big.likelihoodOptions.robotLikelihoodK = 65;
+    EXPECT_THROW(big.insertObservation(*o, pose3({0, 0, 0})), std::invalid_argument);
 }
 
 // tag_robot_pose = samples_init: a new tag's particles are placed by robot

@@ -66,6 +66,13 @@ struct CRFIDTagParticleMapImpl {
             e.estimate = rfir::models::weightedEstimate(pts, {});
         }
         if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles) return;
+        // Options set in code skip the INI's check; the weighing holds at most
+        // kMax terms, so a larger K must not be cut silently.
+        if (m.likelihoodOptions.robotLikelihoodK >
+            Map::TLikelihoodOptions::kMaxRobotLikelihoodK)
+            throw std::invalid_argument(
+                "CRFIDTagParticleMap: robot_likelihood_k above " +
+                std::to_string(Map::TLikelihoodOptions::kMaxRobotLikelihoodK));
         const size_t n = pts.size(),
                      K = std::min(n, m.likelihoodOptions.robotLikelihoodK);
         e.sample.resize(K);

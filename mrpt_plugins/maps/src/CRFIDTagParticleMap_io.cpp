@@ -218,6 +218,14 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                 io.tagRobotPose = static_cast<TTagRobotPose>(in.ReadAs<uint8_t>());
                 lo.robotLikelihood = static_cast<TRobotLikelihood>(in.ReadAs<uint8_t>());
                 lo.robotLikelihoodK = in.ReadAs<uint64_t>();
+                if (lo.robotLikelihoodK < 1 ||
+                    lo.robotLikelihoodK > TLikelihoodOptions::kMaxRobotLikelihoodK)
+                    throw std::runtime_error(
+                        "CRFIDTagParticleMap: robot_likelihood_k = " +
+                        std::to_string(lo.robotLikelihoodK) +
+                        " read from the stream, "
+                        "outside 1.." +
+                        std::to_string(TLikelihoodOptions::kMaxRobotLikelihoodK));
                 in >> io.spreadCommitTravel;
             }
             in >> m_landmarkNames;

@@ -206,20 +206,32 @@ TEST(RawlogIO, UnregisteredClassIsAnErrorNotAnEnd) {
     }
 }
 
+namespace {
+/** A rawlog as another program may write it: no header, one instant with an
+ * odometry record and, optionally, a movement. */
+void writeOdometryOnly(const std::string& path, double t, const mrpt::poses::CPose2D& odo,
+                       std::optional<mrpt::poses::CPose2D> movement = std::nullopt) {
+    mrpt::io::CFileGZOutputStream f(path);
+    auto ar = mrpt::serialization::archiveFrom(f);
+    mrpt::obs::CActionCollection acts;
+    if (movement) {
+        mrpt::obs::CActionRobotMovement2D mv;
+        mv.computeFromOdometry(*movement, {});
+        acts.insert(mv);
+    }
+    mrpt::obs::CSensoryFrame sf;
+    auto od = mrpt::obs::CObservationOdometry::Create();
+    od->timestamp = mrpt::Clock::fromDouble(t);
+    od->odometry = odo;
+    sf.insert(od);
+    ar << acts << sf;
+}
+}  // namespace
+
 TEST(RawlogIO, RawlogWithoutHeaderIsReadWithAnEmptyHeader) {
     TmpDir d;
     const auto path = d / "f.rawlog";
-    {
-        mrpt::io::CFileGZOutputStream f(path);
-        auto ar = mrpt::serialization::archiveFrom(f);
-        mrpt::obs::CActionCollection acts;
-        mrpt::obs::CSensoryFrame sf;
-        auto od = mrpt::obs::CObservationOdometry::Create();
-        od->timestamp = mrpt::Clock::fromDouble(3);
-        od->odometry = exactPose(1, 2, 3);
-        sf.insert(od);
-        ar << acts << sf;
-    }
+    writeOdometryOnly(path, 3, exactPose(1, 2, 3));
     CRawlogReader r(path);
     EXPECT_TRUE(r.header().readers.empty());
     TRawlogStep st;
@@ -235,20 +247,7 @@ TEST(RawlogIO, FirstMovementKeptUnlessZero) {
     // movement, which the reader keeps (only the writer's zero anchor goes).
     TmpDir d;
     const auto path = d / "m.rawlog";
-    {
-        mrpt::io::CFileGZOutputStream f(path);
-        auto ar = mrpt::serialization::archiveFrom(f);
-        mrpt::obs::CActionCollection acts;
-        mrpt::obs::CActionRobotMovement2D mv;
-        mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0, 0), {});
-        acts.insert(mv);
-        mrpt::obs::CSensoryFrame sf;
-        auto od = mrpt::obs::CObservationOdometry::Create();
-        od->timestamp = mrpt::Clock::fromDouble(3);
-        od->odometry = exactPose(1, 2, 0);
-        sf.insert(od);
-        ar << acts << sf;
-    }
+    writeOdometryOnly(path, 3, exactPose(1, 2, 0), mrpt::poses::CPose2D(0.1, 0, 0));
     CRawlogReader r(path);
     TRawlogStep st;
     ASSERT_TRUE(r.next(st));

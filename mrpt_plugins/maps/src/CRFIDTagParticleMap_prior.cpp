@@ -23,8 +23,9 @@ TPriorRecord parseRecord(const std::string& line, const std::string& where) {
     if (!in) throw std::runtime_error(where + ": expected '" + r.kind + " <id> <x> <y>'");
     if (in >> r.sx) {
         if (!(in >> r.sy) || !(r.sx >= 0) || !(r.sy >= 0))
-            throw std::runtime_error(where + ": the standard deviations must be two "
-                                             "non-negative numbers");
+            throw std::runtime_error(where +
+                                     ": the standard deviations must be two "
+                                     "non-negative numbers");
     }
     std::string extra;
     if (in.clear(), in >> extra)
@@ -48,8 +49,8 @@ void CRFIDTagParticleMap::loadPriorFromTextFile(const std::string& path) {
         const auto r = parseRecord(line, path + ":" + std::to_string(n));
         auto& table = kind == "tag" ? m_tags : m_landmarks;
         if (table.count(r.id))
-            throw std::runtime_error(path + ":" + std::to_string(n) + ": " + kind +
-                                     " '" + r.id + "' given twice");
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": " + kind + " '" +
+                                     r.id + "' given twice");
         TTagEntry e;
         e.id = r.id;
         e.estimator = CRFIDTagParticleMapImpl::makeEstimator(insertionOptions);

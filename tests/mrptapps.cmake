@@ -8,5 +8,5 @@ add_dependencies(test_mrpt_layouts rfir-slam rfir_mrpt_plugin)
 # (skipped where they are missing).
 rfir_add_test(test_mrpt_apps
   SOURCES test_mrpt_apps.cpp
-  LIBS rfir_eval)
+  LIBS rfir_eval rfir_maps)
 add_dependencies(test_mrpt_apps rfir_mrpt_plugin)

@@ -5,11 +5,16 @@
 #include <rfir/common/rawlog_io.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/eval/metrics.h>
+#include <rfir/maps/CRFIDTagParticleMap.h>
 
 #include "test_tmpdir.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/poses/CPoint2D.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -174,6 +179,68 @@ TEST(MrptApps, PfLocalizationAgainstThePriorTagMap) {
               << 1000 * s.max_dist << " mm over " << s.count << " poses\n";
     EXPECT_LT(s.mean_dist, 0.05);
     EXPECT_LT(s.max_dist, 0.15);
+}
+
+/** A CMultiMetricMap with the tag map, as pf-localization builds it. */
+mrpt::maps::CMultiMetricMap mapFromIni(const std::string& priorFile) {
+    mrpt::config::CConfigFileMemory ini;
+    ini.write("MetricMap", "rfidTagMap_count", 1);
+    ini.write("MetricMap_rfidTagMap_00_creationOpts", "prior_map_file", priorFile);
+    ini.write("MetricMap_rfidTagMap_00_likelihoodOpts", "robot_update", "literal");
+    mrpt::maps::TSetOfMetricMapInitializers inits;
+    inits.loadFromConfigFile(ini, "MetricMap");
+    mrpt::maps::CMultiMetricMap m;
+    m.setListOfMaps(inits);
+    return m;
+}
+
+TEST(MrptApps, PriorTagMapInACMultiMetricMap) {
+    rfir::maps::registerAllClasses();
+    TmpDir d;
+    std::ofstream(d / "prior.txt") << "# a map\ntag A 1 2\nlandmark L 3 4 0.1 0.1\n"
+                                      "emitter E 1 1\n";
+    auto mm = mapFromIni(d / "prior.txt");
+    auto m = mm.mapByClass<rfir::maps::CRFIDTagParticleMap>();
+    ASSERT_TRUE(m);
+    ASSERT_EQ(m->tagCount(), 1u);
+    ASSERT_EQ(m->landmarkCount(), 1u);
+    EXPECT_NEAR(m->getTag("A")->estimate.mean.x, 1, 1e-9);
+    EXPECT_NEAR(m->getTag("A")->estimate.mean.y, 2, 1e-9);
+    EXPECT_NEAR(m->getLandmark("L")->estimate.mean.x, 3, 0.05);
+    // A read of A weighs a robot whose reader covers the tag above one whose
+    // reader does not (the likelihood receives the robot pose).
+    rfir::obs::CObservationRFIDReaders obs;
+    rfir::obs::CObservationRFIDReaders::TReading rd;
+    rd.reader = {"R0", 0.1, 0, 0.03, 0.03};
+    rd.tags = {"A"};
+    obs.readings.push_back(rd);
+    const double in =
+        mm.computeObservationLikelihood(obs, mrpt::poses::CPose3D(0.9, 2, 0));
+    const double out =
+        mm.computeObservationLikelihood(obs, mrpt::poses::CPose3D(0.5, 2, 0));
+    EXPECT_TRUE(std::isfinite(in) && std::isfinite(out));
+    EXPECT_GT(in, out);
+    // Copies by serialization (as rbpf-slam's resampling) keep the prior.
+    mrpt::io::CMemoryStream buf;
+    mrpt::serialization::archiveFrom(buf) << mm;
+    buf.Seek(0);
+    mrpt::maps::CMultiMetricMap copy;
+    mrpt::serialization::archiveFrom(buf) >> copy;
+    auto mc = copy.mapByClass<rfir::maps::CRFIDTagParticleMap>();
+    ASSERT_TRUE(mc);
+    EXPECT_EQ(mc->tagCount(), 1u);
+    EXPECT_EQ(copy.computeObservationLikelihood(obs, mrpt::poses::CPose3D(0.9, 2, 0)),
+              in);
+
+    // A bad record names the file and line; a missing file is refused.
+    std::ofstream(d / "bad.txt") << "tag A 1 2\ntag B 1\n";
+    try {
+        mapFromIni(d / "bad.txt");
+        FAIL() << "no error";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.txt:2"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(mapFromIni(d / "missing.txt"), std::exception);
 }
 
 }  // namespace

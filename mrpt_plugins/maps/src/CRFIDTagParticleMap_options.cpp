@@ -106,9 +106,8 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
                                          rbUseLandmarkCov ? 1 : 0) == 1;
     robotLikelihood = static_cast<TRobotLikelihood>(rfir::readIniEnum(
         c, s, "robot_likelihood", kRobotLikNames, static_cast<size_t>(robotLikelihood)));
-    robotLikelihoodK =
-        rfir::readIniPositiveInt(c, s, "robot_likelihood_k", robotLikelihoodK,
-                                 kMaxRobotLikelihoodK);
+    robotLikelihoodK = rfir::readIniPositiveInt(c, s, "robot_likelihood_k",
+                                                robotLikelihoodK, kMaxRobotLikelihoodK);
 }
 
 void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const {

@@ -2,6 +2,7 @@
  * (docs/rawlog-layout.md). */
 #pragma once
 
+#include <rfir/common/gz_input.h>
 #include <rfir/obs/CObservationIRSignals.h>
 #include <rfir/obs/CObservationLogHeader.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
@@ -82,7 +83,7 @@ public:
 private:
     mrpt::serialization::CSerializable::Ptr readObject();
     std::string path_;
-    mrpt::io::CFileGZInputStream in_;
+    CGzInputStream in_;
     size_t entry_ = 0, steps_ = 0;
     bool sawOdometry_ = false;  //!< an absolute odometry record was read
     rfir::obs::CObservationLogHeader::Ptr header_;

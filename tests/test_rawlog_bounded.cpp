@@ -8,9 +8,12 @@
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -227,4 +230,57 @@ TEST(MrptGuards, HugeContainerCountsAreRefused) {
         const auto e = errorOf([&] { readBack(b); });
         EXPECT_NE(e.find(name + ": object count"), std::string::npos) << e;
     }
+}
+
+namespace {
+template <class T>
+std::vector<uint8_t> serialized(const T& o) {
+    mrpt::io::CMemoryStream m;
+    auto w = mrpt::serialization::archiveFrom(m);
+    w << o;
+    const auto* p = static_cast<const uint8_t*>(m.getRawBufferData());
+    return std::vector<uint8_t>(p, p + m.getTotalBytesCount());
+}
+}  // namespace
+
+TEST(MrptGuards, OdometryLabelLengthIsBounded) {
+    registerAllClasses();
+    mrpt::obs::CObservationOdometry o;
+    o.sensorLabel = "ODOMETRY";
+    o.odometry = mrpt::poses::CPose2D(1, 2, 0.5);
+    auto b = serialized(o);
+    auto back = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(readBack(b));
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->sensorLabel, "ODOMETRY");
+    EXPECT_EQ(serialized(*back), b);
+    // The label follows the class header and the CPose2D object.
+    const size_t at = 1 + std::string("mrpt::obs::CObservationOdometry").size() + 1 + 47;
+    ASSERT_EQ(b[at], 8);
+    b[at + 3] = 0x7F;
+    const auto e = errorOf([&] { readBack(b); });
+    EXPECT_NE(e.find("sensorLabel length"), std::string::npos) << e;
+}
+
+TEST(MrptGuards, BearingRangeCountIsBounded) {
+    registerAllClasses();
+    mrpt::obs::CObservationBearingRange o;
+    o.sensorLabel = "RB";
+    o.maxSensorDistance = 0.5;
+    o.sensedData.resize(2);
+    o.sensedData[1].range = 0.25f;
+    o.sensedData[1].landmarkID = 7;
+    auto b = serialized(o);
+    auto back =
+        std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(readBack(b));
+    ASSERT_TRUE(back);
+    ASSERT_EQ(back->sensedData.size(), 2u);
+    EXPECT_EQ(back->sensedData[1].landmarkID, 7);
+    EXPECT_EQ(serialized(*back), b);
+    // Header, 4 floats, the CPose3D object, timestamp, flag, 3 deviations.
+    const size_t at = 1 + std::string("mrpt::obs::CObservationBearingRange").size() + 1 +
+                      16 + 119 + 8 + 1 + 12;
+    ASSERT_EQ(b[at], 2);
+    b[at + 3] = 0x40;
+    const auto e = errorOf([&] { readBack(b); });
+    EXPECT_NE(e.find("measurement count"), std::string::npos) << e;
 }

@@ -4,6 +4,8 @@
 
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPosePDF.h>
 #include <mrpt/rtti/CObject.h>
@@ -128,6 +130,74 @@ void checkContainerCount(CPeekArchive& a, const char* cls) {
                         std::to_string(*left) + " bytes left");
 }
 
+/** Reads ahead a whole pose object of class `name` (version `ver`, `n` doubles). */
+void peekPoseObject(CPeekArchive& a, const char* cls, const char* name, uint8_t ver,
+                    size_t n) {
+    if (peekClassName(a, cls) != name || a.peek<uint8_t>() != ver)
+        refuse(cls, std::string("expected a ") + name + " (version " +
+                        std::to_string(ver) + ")");
+    std::vector<double> v(n);
+    a.peekBytes(v.data(), n * sizeof(double));
+    if (a.peek<uint8_t>() != 0x88)
+        refuse(cls, std::string("the ") + name + " is cut short");
+}
+
+/** CObservationOdometry version 2 (MRPT 2.5.8): the pose, then the label. */
+void checkOdometry(CPeekArchive& a, uint8_t version) {
+    constexpr const char* kCls = "mrpt::obs::CObservationOdometry";
+    if (version != 2) return;
+    peekPoseObject(a, kCls, "mrpt::poses::CPose2D", 1, 3);
+    const auto len = a.peek<uint32_t>();
+    const auto left = bytesLeftInStream();
+    if (len > TReadBounds::kMaxLabelBytes || (left && len > *left))
+        refuse(kCls,
+               "sensorLabel length " + std::to_string(len) + " is above the bound " +
+                   std::to_string(TReadBounds::kMaxLabelBytes) + " or the bytes left");
+}
+
+/** CObservationBearingRange version 3 (MRPT 2.5.8): 4 floats, the sensor pose,
+ * the timestamp, validCovariances; without covariances 3 float deviations,
+ * then the measurement count (16 bytes each at least). */
+void checkBearingRange(CPeekArchive& a, uint8_t version) {
+    constexpr const char* kCls = "mrpt::obs::CObservationBearingRange";
+    if (version != 3) return;
+    float f[4];
+    a.peekBytes(f, sizeof(f));
+    peekPoseObject(a, kCls, "mrpt::poses::CPose3D", 3, 12);
+    (void)a.peek<uint64_t>();  // timestamp
+    const auto validCov = a.peek<uint8_t>();
+    if (validCov > 1)
+        refuse(kCls, "validCovariances byte " + std::to_string(validCov) +
+                         " is neither 0 nor 1");
+    if (validCov) return;  // the layout with covariances is not checked
+    float sd[3];
+    a.peekBytes(sd, sizeof(sd));
+    const auto n = a.peek<uint32_t>();
+    const auto left = bytesLeftInStream();
+    if (n > TMrptReadBounds::kMaxMeasurements || (left && uint64_t(n) * 16 > *left))
+        refuse(kCls, "measurement count " + std::to_string(n) + " is above the bound " +
+                         std::to_string(TMrptReadBounds::kMaxMeasurements) +
+                         " or the bytes left");
+}
+
+class CGuardedOdometry : public mrpt::obs::CObservationOdometry {
+  protected:
+    void serializeFrom(CArchive& in, uint8_t version) override {
+        CPeekArchive a(in);
+        checkOdometry(a, version);
+        CObservationOdometry::serializeFrom(a, version);
+    }
+};
+
+class CGuardedBearingRange : public mrpt::obs::CObservationBearingRange {
+  protected:
+    void serializeFrom(CArchive& in, uint8_t version) override {
+        CPeekArchive a(in);
+        checkBearingRange(a, version);
+        CObservationBearingRange::serializeFrom(a, version);
+    }
+};
+
 class CGuardedRobotMovement2D : public mrpt::obs::CActionRobotMovement2D {
   protected:
     void serializeFrom(CArchive& in, uint8_t version) override {
@@ -178,9 +248,12 @@ void registerMrptGuards() {
         // The lookup makes MRPT process its queue of pending registrations now.
         std::ostringstream quiet;
         auto* const old = std::cerr.rdbuf(quiet.rdbuf());
-        for (const auto* id : {guardId<CGuardedRobotMovement2D, CActionRobotMovement2D>(),
-                               guardId<CGuardedActionCollection, CActionCollection>(),
-                               guardId<CGuardedSensoryFrame, CSensoryFrame>()}) {
+        for (const auto* id :
+             {guardId<CGuardedRobotMovement2D, CActionRobotMovement2D>(),
+              guardId<CGuardedActionCollection, CActionCollection>(),
+              guardId<CGuardedSensoryFrame, CSensoryFrame>(),
+              guardId<CGuardedOdometry, CObservationOdometry>(),
+              guardId<CGuardedBearingRange, CObservationBearingRange>()}) {
             mrpt::rtti::registerClass(id);
             mrpt::rtti::findRegisteredClass(id->className);
         }

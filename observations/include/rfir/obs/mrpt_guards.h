@@ -17,5 +17,6 @@ void registerMrptGuards();
 struct TMrptReadBounds {
     static constexpr unsigned kMaxObjectsPerContainer = 4096;
     static constexpr unsigned kMaxThrunParticles = 100000;
+    static constexpr unsigned kMaxMeasurements = 1 << 20;  //!< bearing-range
 };
 }  // namespace rfir::obs

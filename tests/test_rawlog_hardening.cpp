@@ -131,6 +131,10 @@ void expectCleanFailure(const std::string& prog, const std::string& rawlog,
 }
 }  // namespace
 
+namespace {
+std::string smallRawlog(const TmpDir& d);
+}  // namespace
+
 TEST(RawlogHardening, TheHarnessSeesASuccess) {
     TmpDir d;
     const auto r =
@@ -169,7 +173,7 @@ TEST(RawlogHardening, TheMrptCrashIsNamed) {
 
 TEST(RawlogHardening, CutGzipTrailerIsAnErrorNamingTheEntry) {
     TmpDir d;
-    const auto bytes = readFile(kSrc + "/datasets/rfid_kidnap.rawlog");
+    const auto bytes = readFile(smallRawlog(d));
     const std::string cut = d / "cut.rawlog";
     writeFile(cut, bytes.substr(0, bytes.size() - 8));  // CRC and size gone
     for (const auto& prog : kPrograms) expectCleanFailure(prog, cut, d, "truncated");

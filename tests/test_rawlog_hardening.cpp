@@ -103,8 +103,11 @@ const std::vector<std::string> kPrograms = {"rfir-import", "rfir-slam", "rfir-ev
 
 std::vector<std::string> reproducers() {
     std::vector<std::string> v;
-    for (const auto& e : fs::directory_iterator(kSrc + "/tests/data/repro"))
-        if (e.path().extension() == ".rawlog") v.push_back(e.path().string());
+    // Issue 15's reproducers, and the rawlogs fuzzing found crashing.
+    for (const auto* dir : {"/tests/data/repro", "/tests/data/fuzz_crashes/rawlog"})
+        if (fs::is_directory(kSrc + dir))
+            for (const auto& e : fs::directory_iterator(kSrc + dir))
+                if (e.path().extension() == ".rawlog") v.push_back(e.path().string());
     std::sort(v.begin(), v.end());
     return v;
 }

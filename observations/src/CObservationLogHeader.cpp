@@ -1,5 +1,7 @@
 /* rfir: rawlog header observation. */
 #include <rfir/obs/CObservationLogHeader.h>
+#include <rfir/obs/bounded_read.h>
+#include <rfir/obs/registerAllClasses.h>
 
 #include <mrpt/serialization/CArchive.h>
 
@@ -8,17 +10,18 @@
 using namespace rfir::obs;
 
 IMPLEMENTS_SERIALIZABLE(CObservationLogHeader, mrpt::obs::CObservation, rfir::obs)
+RFIR_REGISTER_CLASS(CObservationLogHeader, rfir::obs::CObservationLogHeader)
 
-std::string CObservationLogHeader::landmarkName(int32_t id) const
-{
+std::string CObservationLogHeader::landmarkName(int32_t id) const {
     if (id >= 0 && size_t(id) < rbLandmarkNames.size()) return rbLandmarkNames[id];
     return std::to_string(id);
 }
 
-uint8_t CObservationLogHeader::serializeGetVersion() const { return 0; }
+uint8_t CObservationLogHeader::serializeGetVersion() const {
+    return 0;
+}
 
-void CObservationLogHeader::serializeTo(mrpt::serialization::CArchive& out) const
-{
+void CObservationLogHeader::serializeTo(mrpt::serialization::CArchive& out) const {
     out << timestamp << sensorLabel;
     out.WriteAs<uint32_t>(readers.size());
     for (const auto& r : readers) out << r.id << r.x << r.y << r.halfX << r.halfY;
@@ -35,30 +38,31 @@ void CObservationLogHeader::serializeTo(mrpt::serialization::CArchive& out) cons
 }
 
 void CObservationLogHeader::serializeFrom(mrpt::serialization::CArchive& in,
-                                          uint8_t version)
-{
-    switch (version)
-    {
-        case 0:
-        {
-            in >> timestamp >> sensorLabel;
-            readers.resize(in.ReadAs<uint32_t>());
-            for (auto& r : readers) in >> r.id >> r.x >> r.y >> r.halfX >> r.halfY;
-            receivers.resize(in.ReadAs<uint32_t>());
-            for (auto& r : receivers) in >> r.id >> r.x >> r.y >> r.z;
-            bool has = false;
-            in >> has;
+                                          uint8_t version) {
+    switch (version) {
+        case 0: {
+            using B = TReadBounds;
+            constexpr const char* kWhat = "CObservationLogHeader";
+            in >> timestamp;
+            sensorLabel = readBoundedString(in, kWhat);
+            readers.resize(readBoundedCount(in, kWhat, B::kMaxSensors, 4 + 32));
+            for (auto& r : readers) {
+                r.id = readBoundedString(in, kWhat);
+                in >> r.x >> r.y >> r.halfX >> r.halfY;
+            }
+            receivers.resize(readBoundedCount(in, kWhat, B::kMaxSensors, 4 + 24));
+            for (auto& r : receivers) {
+                r.id = readBoundedString(in, kWhat);
+                in >> r.x >> r.y >> r.z;
+            }
             rbSensor.reset();
-            if (has)
-            {
+            if (readStrictBool(in, kWhat)) {
                 TRBSensor s;
                 in >> s.x >> s.y >> s.yaw >> s.maxRange >> s.fov;
                 rbSensor = s;
             }
-            in >> has;
             startPose.reset();
-            if (has)
-            {
+            if (readStrictBool(in, kWhat)) {
                 double x, y, phi;
                 in >> x >> y >> phi;
                 // Set field by field: CPose2D(x, y, phi) normalizes a
@@ -68,20 +72,18 @@ void CObservationLogHeader::serializeFrom(mrpt::serialization::CArchive& in,
                 startPose->y(y);
                 startPose->phi(phi);
             }
-            rbLandmarkNames.resize(in.ReadAs<uint32_t>());
-            for (auto& n : rbLandmarkNames) in >> n;
-        }
-        break;
+            rbLandmarkNames.resize(readBoundedCount(in, kWhat, B::kMaxNames, 4));
+            for (auto& n : rbLandmarkNames) n = readBoundedString(in, kWhat);
+        } break;
         default:
             MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     }
 }
 
-void CObservationLogHeader::getDescriptionAsText(std::ostream& o) const
-{
+void CObservationLogHeader::getDescriptionAsText(std::ostream& o) const {
     CObservation::getDescriptionAsText(o);
-    o << "rfir log header (the robot's declared sensors)\n" << std::fixed
-      << std::setprecision(4);
+    o << "rfir log header (the robot's declared sensors)\n"
+      << std::fixed << std::setprecision(4);
     o << "RFID readers: " << readers.size() << "\n";
     for (const auto& r : readers)
         o << "  " << std::left << std::setw(12) << r.id << std::right << " centre ("

@@ -1,4 +1,5 @@
 #include <rfir/common/rawlog_io.h>
+#include <rfir/obs/registerAllClasses.h>
 
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRFID.h>
@@ -21,10 +22,10 @@ namespace
 /** A gz stream only reports EOF after a read has failed, so the reader takes
  * one byte to tell "no more objects" from "object cut short", then hands that
  * byte back to the archive through this wrapper. */
-class CPushbackStream : public mrpt::io::CStream
+class CPushbackStream : public mrpt::io::CStream, public rfir::obs::IBytesLeft
 {
 public:
-    CPushbackStream(mrpt::io::CStream& s, uint8_t first) : s_(s), first_(first) {}
+    CPushbackStream(CGzInputStream& s, uint8_t first) : s_(s), first_(first) {}
     size_t Read(void* buf, size_t n) override
     {
         if (n == 0) return 0;
@@ -45,12 +46,31 @@ public:
     uint64_t getTotalBytesCount() const override { return s_.getTotalBytesCount(); }
     uint64_t getPosition() const override { return s_.getPosition() - (pending_ ? 1 : 0); }
     std::string getStreamDescription() const override { return s_.getStreamDescription(); }
+    std::optional<uint64_t> bytesLeft() const override
+    {
+        return *s_.bytesLeft() + (pending_ ? 1 : 0);
+    }
 
 private:
-    mrpt::io::CStream& s_;
+    CGzInputStream& s_;
     uint8_t first_;
     bool pending_ = true;
 };
+/** MRPT wraps an error once per nesting level ("==== MRPT exception ====",
+ * "Message: ...", "Original exception: ..."); the innermost one says what is
+ * wrong, so that is the one reported. */
+std::string innermostError(std::string msg)
+{
+    const std::string orig = "Original exception:";
+    if (const auto k = msg.rfind(orig); k != std::string::npos) msg = msg.substr(k + orig.size());
+    const std::string head = "Message:";
+    if (msg.find("==== MRPT exception ====") != std::string::npos)
+        if (const auto k = msg.find(head); k != std::string::npos)
+            msg = msg.substr(k + head.size());
+    const auto b = msg.find_first_not_of(" \t\n");
+    msg = b == std::string::npos ? std::string() : msg.substr(b);
+    return msg.substr(0, msg.find('\n'));
+}
 }  // namespace
 
 CRawlogWriter::CRawlogWriter(const std::string& path,
@@ -58,6 +78,7 @@ CRawlogWriter::CRawlogWriter(const std::string& path,
                              const CActionRobotMovement2D::TMotionModelOptions& motion)
     : path_(path), tmp_(path + ".tmp." + std::to_string(::getpid())), motion_(motion)
 {
+    rfir::obs::registerAllClasses();
     out_ = std::make_unique<mrpt::io::CFileGZOutputStream>();
     if (!out_->open(tmp_))
         throw std::runtime_error("cannot open '" + path + "' for writing");
@@ -139,16 +160,8 @@ void CRawlogWriter::close()
 
 CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
 {
-    // CFileGZInputStream throws its own exception type for a missing file.
-    bool opened = false;
-    try
-    {
-        opened = std::filesystem::is_regular_file(path) && in_.open(path);
-    }
-    catch (const std::exception&)
-    {
-    }
-    if (!opened) throw std::runtime_error(path + ": cannot open rawlog");
+    rfir::obs::registerAllClasses();
+    in_.open(path);  // throws "PATH: is a directory" / "no such file" / ...
     auto a = readObject();
     if (auto o = std::dynamic_pointer_cast<CObservation>(a))
     {
@@ -187,18 +200,24 @@ CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
 
 mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject()
 {
-    uint8_t first = 0;
-    if (in_.Read(&first, 1) != 1) return {};  // the end, between two objects
-    entry_++;
+    entry_++;  // a stream cut between two objects fails in the next entry
     try
     {
+        uint8_t first = 0;
+        if (in_.Read(&first, 1) != 1)
+        {
+            entry_--;
+            return {};  // the end, between two objects
+        }
         CPushbackStream s(in_, first);
+        // Counts read by the classes are checked against the bytes left.
+        rfir::obs::CBytesLeftScope scope(&s);
         auto ar = mrpt::serialization::archiveFrom(s);
         return ar.ReadObject();
     }
     catch (const std::exception& e)
     {
-        std::string msg = e.what();
+        std::string msg = innermostError(e.what());
         if (msg.size() > 300) msg = msg.substr(0, 300) + "...";
         throw std::runtime_error(path_ + ": entry " + std::to_string(entry_) +
                                  ": cannot read object (corrupt file, or a class not "

@@ -1,9 +1,10 @@
 /* rfir: CIREmitterMap, the likelihood and the CMetricMap plumbing. */
 #include <rfir/common/map_io.h>
 #include <rfir/maps/CIREmitterMap.h>
+#include <rfir/obs/bounded_read.h>
 #include <rfir/obs/ir_codes.h>
+#include <rfir/obs/registerAllClasses.h>
 
-#include <mrpt/core/initializer.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/poses/CPose3D.h>
@@ -23,9 +24,7 @@ void registerIRClasses() {
 }
 }  // namespace rfir::maps
 
-MRPT_INITIALIZER(rfir_ir_register) {
-    rfir::maps::registerIRClasses();
-}
+RFIR_REGISTER_CLASS(CIREmitterMap, rfir::maps::CIREmitterMap)
 
 void CIREmitterMap::loadEmitterFile(const std::string& path) {
     m_emitters = rfir::ir::TEmitterSet::load(path);
@@ -178,14 +177,17 @@ void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ver
     else
         p.outOfRangeRamp = 0;  // a step before version 3
     likelihoodOptions.association = TAssociation(as);
-    const uint32_t n = in.ReadAs<uint32_t>();
-    std::vector<rfir::ir::TEmitter> em(n);
-    for (auto& e : em) in >> e.id >> e.x >> e.y >> e.z;
+    using B = rfir::obs::TReadBounds;
+    constexpr const char* kWhat = "CIREmitterMap";
+    std::vector<rfir::ir::TEmitter> em(
+        rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4 + 24));
+    for (auto& e : em) {
+        e.id = rfir::obs::readBoundedString(in, kWhat);
+        in >> e.x >> e.y >> e.z;
+    }
     m_emitters = rfir::ir::TEmitterSet(std::move(em));
-    bool hasRef = false;
-    in >> hasRef;
     m_reference.reset();
-    if (hasRef) {
+    if (rfir::obs::readStrictBool(in, kWhat)) {
         mrpt::math::TPose2D r;
         in >> r.x >> r.y >> r.phi;
         m_reference = r;

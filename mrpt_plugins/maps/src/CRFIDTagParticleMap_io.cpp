@@ -1,5 +1,7 @@
 /* rfir: CRFIDTagParticleMap serialization (versioned), text output and 3D view. */
 #include <rfir/maps/CRFIDTagParticleMap.h>
+#include <rfir/obs/bounded_read.h>
+#include <rfir/obs/registerAllClasses.h>
 
 #include <mrpt/opengl/CEllipsoid2D.h>
 #include <mrpt/opengl/CPointCloud.h>
@@ -18,16 +20,21 @@ using mrpt::math::TPoint2D;
 using mrpt::serialization::CArchive;
 
 IMPLEMENTS_SERIALIZABLE(CRFIDTagParticleMap, CMetricMap, rfir::maps)
+RFIR_REGISTER_CLASS(CRFIDTagParticleMap, rfir::maps::CRFIDTagParticleMap)
 
 namespace {
+using rfir::obs::readBoundedCount64;
+using rfir::obs::readBoundedString;
+using rfir::obs::readStrictBool;
+using B = rfir::obs::TReadBounds;
+constexpr const char* kWhat = "CRFIDTagParticleMap";
+
 void writePts(CArchive& a, const std::vector<TPoint2D>& v) {
     a.WriteAs<uint64_t>(v.size());
     for (const auto& p : v) a << p.x << p.y;
 }
 std::vector<TPoint2D> readPts(CArchive& a) {
-    const auto n = a.ReadAs<uint64_t>();
-    if (n > (1ULL << 32)) throw std::runtime_error("CRFIDTagParticleMap: corrupt size");
-    std::vector<TPoint2D> v(n);
+    std::vector<TPoint2D> v(readBoundedCount64(a, kWhat, B::kMaxMapEntries, 16));
     for (auto& p : v) a >> p.x >> p.y;
     return v;
 }
@@ -124,10 +131,11 @@ void writeEntries(CArchive& a,
 template <class TABLE>
 void readEntries(CArchive& a, TABLE& t, uint8_t version) {
     t.clear();
-    const auto n = a.ReadAs<uint64_t>();
+    // An entry takes at least an id, three counts and two estimates on disk.
+    const auto n = readBoundedCount64(a, kWhat, B::kMaxMapEntries, 4 + 24 + 80);
     for (uint64_t i = 0; i < n; i++) {
         CRFIDTagParticleMap::TTagEntry e;
-        a >> e.id;
+        e.id = readBoundedString(a, kWhat);
         e.detections = a.ReadAs<uint64_t>();
         e.visits = a.ReadAs<uint64_t>();
         e.lastReadStep = a.ReadAs<uint64_t>();
@@ -139,10 +147,7 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
         if (version >= 2) {
             e.sample = readPts(a);
             e.visitStartSample = readPts(a);
-            const auto n = a.ReadAs<uint64_t>();
-            if (n > (1ULL << 32))
-                throw std::runtime_error("CRFIDTagParticleMap: corrupt size");
-            e.spreadPoses.resize(n);
+            e.spreadPoses.resize(readBoundedCount64(a, kWhat, B::kMaxMapEntries, 24));
             for (auto& q : e.spreadPoses) a >> q.x >> q.y >> q.phi;
             a >> e.spreadOrigin.x >> e.spreadOrigin.y >> e.spreadOrigin.phi >>
                 e.spreadTravel;
@@ -207,7 +212,7 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
             in >> lo.rangeBearing.sigmaRange >> lo.rangeBearing.sigmaBearing;
             lo.robotUpdate = static_cast<TRobotUpdatePolicy>(in.ReadAs<uint8_t>());
             lo.revisitMinGap = in.ReadAs<uint64_t>();
-            in >> lo.rbUseLandmarkCov;
+            lo.rbUseLandmarkCov = readStrictBool(in, kWhat);
             lo.revisitMinTravel = 0;
             if (version >= 1) in >> lo.revisitMinTravel;
             io.tagRobotPose = TTagRobotPose::Mean;
@@ -228,13 +233,19 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                         std::to_string(TLikelihoodOptions::kMaxRobotLikelihoodK));
                 in >> io.spreadCommitTravel;
             }
-            in >> m_landmarkNames;
+            m_landmarkNames.resize(
+                rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
+            for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);
             m_track[0] = m_track[1] = TSensorTrack();
             m_track[0].steps = in.ReadAs<uint64_t>();
             m_track[1].steps = in.ReadAs<uint64_t>();
             m_totalTouched = in.ReadAs<uint64_t>();
             if (version >= 1)
-                for (auto& t : m_track) in >> t.travel >> t.hasPose >> t.lastX >> t.lastY;
+                for (auto& t : m_track) {
+                    in >> t.travel;
+                    t.hasPose = readStrictBool(in, kWhat);
+                    in >> t.lastX >> t.lastY;
+                }
             m_lastTouched = 0;
             readEntries(in, m_tags, version);
             readEntries(in, m_landmarks, version);

@@ -2,15 +2,14 @@
  * filled by MAP_DEFINITION_REGISTER at load time). */
 #include <rfir/maps/CRFIDTagParticleMap.h>
 
-#include <mrpt/core/initializer.h>
 #include <mrpt/rtti/CObject.h>
 #include <rfir/obs/registerAllClasses.h>
 
-MRPT_INITIALIZER(registerAllClasses_rfir_maps) {
-    rfir::maps::registerAllClasses();
-}
-
+// The class also registers itself from CRFIDTagParticleMap_io.cpp
+// (RFIR_REGISTER_CLASS); this is the on-first-use path for entry points.
 void rfir::maps::registerAllClasses() {
     rfir::obs::registerAllClasses();
-    mrpt::rtti::registerClass(CLASS_ID(rfir::maps::CRFIDTagParticleMap));
+    static const bool done =
+        (mrpt::rtti::registerClass(CLASS_ID(rfir::maps::CRFIDTagParticleMap)), true);
+    (void)done;
 }

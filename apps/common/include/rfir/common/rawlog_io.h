@@ -2,6 +2,7 @@
  * (docs/rawlog-layout.md). */
 #pragma once
 
+#include <rfir/common/gz_input.h>
 #include <rfir/obs/CObservationIRSignals.h>
 #include <rfir/obs/CObservationLogHeader.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
@@ -95,7 +96,7 @@ private:
     rfir::obs::TRFIDReader readerOf(const mrpt::obs::CObservationRFID& o,
                                     const std::string& id);
     std::string path_;
-    mrpt::io::CFileGZInputStream in_;
+    CGzInputStream in_;
     size_t entry_ = 0, steps_ = 0;
     bool sawOdometry_ = false;  //!< an absolute odometry record was read
     bool obsOnly_ = false;      //!< MRPT's observation-only layout

@@ -1,0 +1,82 @@
+/* rfir: gzip input stream with errors and a known size. */
+#include <rfir/common/gz_input.h>
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+namespace rfir::common {
+namespace {
+constexpr size_t kChunk = 1 << 16;
+
+std::string gzMessage(gzFile f) {
+    int code = 0;
+    const char* m = gzerror(f, &code);
+    return m && *m ? m : "read error";
+}
+}  // namespace
+
+CGzInputStream::~CGzInputStream() {
+    close();
+}
+
+void CGzInputStream::close() {
+    if (gz_) gzclose(static_cast<gzFile>(gz_));
+    gz_ = nullptr;
+}
+
+void CGzInputStream::open(const std::string& path) {
+    close();
+    path_ = path;
+    total_ = pos_ = 0;
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw std::runtime_error(path + ": is a directory, not a rawlog file");
+    if (!std::filesystem::exists(path, ec))
+        throw std::runtime_error(path + ": no such file");
+    gz_ = gzopen(path.c_str(), "rb");
+    if (!gz_) throw std::runtime_error(path + ": cannot open for reading");
+    // One pass to learn the uncompressed size: counts read from the file are
+    // checked against it before anything is allocated. A damaged tail stops
+    // the count; the read reports it at the entry where it is met.
+    auto f = static_cast<gzFile>(gz_);
+    std::string buf(kChunk, '\0');
+    for (int r; (r = gzread(f, buf.data(), kChunk)) > 0;) total_ += uint64_t(r);
+    gzclearerr(f);
+    if (gzrewind(f) != 0) {
+        close();
+        throw std::runtime_error(path + ": cannot rewind after sizing");
+    }
+}
+
+size_t CGzInputStream::Read(void* buf, size_t n) {
+    if (!gz_) throw std::logic_error("CGzInputStream: read before open");
+    auto f = static_cast<gzFile>(gz_);
+    size_t got = 0;
+    while (got < n) {
+        const unsigned want = unsigned(std::min(n - got, kChunk));
+        const int r = gzread(f, static_cast<char*>(buf) + got, want);
+        if (r < 0)
+            throw std::runtime_error(path_ + ": damaged or truncated gzip stream (" +
+                                     gzMessage(f) + ")");
+        if (r == 0) break;
+        got += size_t(r);
+    }
+    pos_ += got;
+    // zlib ends a stream cut before its trailer like a complete one (a short
+    // read); only the error state (Z_BUF_ERROR) tells them apart.
+    int code = Z_OK;
+    if (got < n) gzerror(f, &code);
+    if (code != Z_OK)
+        throw std::runtime_error(path_ + ": damaged or truncated gzip stream (" +
+                                 gzMessage(f) + ")");
+    return got;
+}
+
+uint64_t CGzInputStream::Seek(int64_t, mrpt::io::CStream::TSeekOrigin) {
+    throw std::logic_error("CGzInputStream: no seek");
+}
+
+}  // namespace rfir::common

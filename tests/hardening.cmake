@@ -1,0 +1,10 @@
+# Corrupt rawlogs: the bounded reader, MRPT's classes guarded, the reproducers
+# of issue 15 through every program, and a truncation / byte-flip sweep.
+rfir_add_test(test_rawlog_hardening
+  SOURCES test_rawlog_bounded.cpp test_rawlog_hardening.cpp
+  LIBS rfir_appcommon)
+foreach(prog rfir-import rfir-slam rfir-eval rfir-localize)
+  if(TARGET ${prog})
+    add_dependencies(test_rawlog_hardening ${prog})
+  endif()
+endforeach()

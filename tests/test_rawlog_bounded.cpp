@@ -1,0 +1,286 @@
+// The bounded reads of counts, strings and flags (rfir/obs/bounded_read.h),
+// and the guards on MRPT's classes (rfir/obs/mrpt_guards.h), on hand-made
+// byte streams.
+#include <rfir/obs/bounded_read.h>
+#include <rfir/obs/registerAllClasses.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace rfir::obs;
+
+namespace {
+struct TFixedLeft : IBytesLeft {
+    uint64_t n;
+    explicit TFixedLeft(uint64_t v) : n(v) {}
+    std::optional<uint64_t> bytesLeft() const override { return n; }
+};
+
+// A stream holding `bytes`, rewound for reading.
+struct TStream {
+    mrpt::io::CMemoryStream m;
+    explicit TStream(const std::vector<uint8_t>& bytes) {
+        if (!bytes.empty()) m.Write(bytes.data(), bytes.size());
+        m.Seek(0);
+    }
+    mrpt::serialization::CArchiveStreamBase<mrpt::io::CMemoryStream> ar() {
+        return mrpt::serialization::archiveFrom(m);
+    }
+};
+
+std::vector<uint8_t> u32(uint32_t v) {
+    return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+}
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(BoundedRead, CountWithinBoundIsReturned) {
+    TStream s(u32(7));
+    auto a = s.ar();
+    EXPECT_EQ(readBoundedCount(a, "T", 7, 1), 7u);
+}
+
+TEST(BoundedRead, CountAboveBoundNamesWhatAndBound) {
+    TStream s(u32(0xFFFFFFFFu));
+    auto a = s.ar();
+    const auto e =
+        errorOf([&] { readBoundedCount(a, "CObservationX: readers", 4096, 1); });
+    EXPECT_NE(e.find("CObservationX: readers"), std::string::npos) << e;
+    EXPECT_NE(e.find("4294967295"), std::string::npos) << e;
+    EXPECT_NE(e.find("4096"), std::string::npos) << e;
+}
+
+TEST(BoundedRead, CountAboveBytesLeftIsRefusedBeforeAllocation) {
+    TFixedLeft left(100);
+    CBytesLeftScope scope(&left);
+    {
+        TStream s(u32(26));  // 26 x 4 bytes > 100
+        auto a = s.ar();
+        const auto e = errorOf([&] { readBoundedCount(a, "T", 1000, 4); });
+        EXPECT_NE(e.find("only 100 left"), std::string::npos) << e;
+    }
+    TStream s(u32(25));  // exactly fits
+    auto a = s.ar();
+    EXPECT_EQ(readBoundedCount(a, "T", 1000, 4), 25u);
+}
+
+TEST(BoundedRead, ScopeRestoresThePreviousSource) {
+    EXPECT_FALSE(bytesLeftInStream());
+    TFixedLeft a(5), b(9);
+    {
+        CBytesLeftScope sa(&a);
+        {
+            CBytesLeftScope sb(&b);
+            EXPECT_EQ(*bytesLeftInStream(), 9u);
+        }
+        EXPECT_EQ(*bytesLeftInStream(), 5u);
+    }
+    EXPECT_FALSE(bytesLeftInStream());
+}
+
+TEST(BoundedRead, Count64AboveBoundIsRefused) {
+    auto b = u32(0);
+    auto hi = u32(1);
+    b.insert(b.end(), hi.begin(), hi.end());  // 2^32
+    TStream s(b);
+    auto a = s.ar();
+    EXPECT_NE(
+        errorOf([&] { readBoundedCount64(a, "M", 1u << 24, 1); }).find("4294967296"),
+        std::string::npos);
+}
+
+TEST(BoundedRead, StringReadsMrptLayout) {
+    mrpt::io::CMemoryStream m;
+    auto w = mrpt::serialization::archiveFrom(m);
+    w << std::string("R0") << std::string();
+    m.Seek(0);
+    auto a = mrpt::serialization::archiveFrom(m);
+    EXPECT_EQ(readBoundedString(a, "T"), "R0");
+    EXPECT_EQ(readBoundedString(a, "T"), "");
+}
+
+TEST(BoundedRead, LongStringIsRefused) {
+    auto b = u32(5000);
+    b.resize(b.size() + 5000, 'x');
+    TStream s(b);
+    auto a = s.ar();
+    const auto e = errorOf([&] { readBoundedString(a, "CObservationLogHeader"); });
+    EXPECT_NE(e.find("CObservationLogHeader"), std::string::npos) << e;
+    EXPECT_NE(e.find("5000"), std::string::npos) << e;
+}
+
+TEST(BoundedRead, StringCutShortThrows) {
+    auto b = u32(10);
+    b.push_back('a');
+    TStream s(b);
+    auto a = s.ar();
+    EXPECT_THROW(readBoundedString(a, "T"), std::exception);
+}
+
+TEST(BoundedRead, StrictBool) {
+    TStream s({0, 1, 51});
+    auto a = s.ar();
+    EXPECT_FALSE(readStrictBool(a, "T"));
+    EXPECT_TRUE(readStrictBool(a, "T"));
+    const auto e = errorOf([&] { readStrictBool(a, "CObservationLogHeader"); });
+    EXPECT_NE(e.find("51"), std::string::npos) << e;
+}
+
+namespace {
+// An odometry action as MRPT writes it, then read back through the registry.
+std::vector<uint8_t> serializedMovement(const mrpt::obs::CActionRobotMovement2D& mv) {
+    mrpt::io::CMemoryStream m;
+    auto w = mrpt::serialization::archiveFrom(m);
+    w << mv;
+    const auto* p = static_cast<const uint8_t*>(m.getRawBufferData());
+    return std::vector<uint8_t>(p, p + m.getTotalBytesCount());
+}
+
+mrpt::serialization::CSerializable::Ptr readBack(const std::vector<uint8_t>& b) {
+    TStream s(b);
+    auto a = s.ar();
+    return a.ReadObject();
+}
+
+// Offset of the int32 estimationMethod: after the name header and version.
+size_t methodOffset() {
+    return 1 + std::string("mrpt::obs::CActionRobotMovement2D").size() + 1;
+}
+}  // namespace
+
+TEST(MrptGuards, ValidMovementReadsBackAsMrptClass) {
+    registerAllClasses();
+    mrpt::obs::CActionRobotMovement2D mv;
+    mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0.2, 0.3), {});
+    auto o = std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(
+        readBack(serializedMovement(mv)));
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->GetRuntimeClass(), CLASS_ID(mrpt::obs::CActionRobotMovement2D));
+    EXPECT_EQ(o->rawOdometryIncrementReading, mv.rawOdometryIncrementReading);
+    // Written back, the bytes are those MRPT wrote.
+    EXPECT_EQ(serializedMovement(*o), serializedMovement(mv));
+}
+
+TEST(MrptGuards, BadEstimationMethodIsRefused) {
+    registerAllClasses();
+    mrpt::obs::CActionRobotMovement2D mv;
+    mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0.2, 0.3), {});
+    auto b = serializedMovement(mv);
+    b[methodOffset() + 1] = 0x09;  // the byte of issue 15's reproducer
+    const auto e = errorOf([&] { readBack(b); });
+    EXPECT_NE(e.find("estimationMethod 2304"), std::string::npos) << e;
+    b[methodOffset() + 1] = 0;
+    b[methodOffset()] = 1;  // emScan2DMatching followed by a CPose2D: MRPT crashes
+    const auto e1 = errorOf([&] { readBack(b); });
+    EXPECT_NE(e1.find("not a pose PDF"), std::string::npos) << e1;
+}
+
+TEST(MrptGuards, HugeThrunParticleCountIsRefused) {
+    registerAllClasses();
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions opt;
+    opt.modelSelection = mrpt::obs::CActionRobotMovement2D::mmThrun;
+    opt.thrunModel.nParticlesCount = 10;
+    mrpt::obs::CActionRobotMovement2D mv;
+    mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0, 0), opt);
+    auto b = serializedMovement(mv);
+    EXPECT_NO_THROW(readBack(b));
+    // The count follows the method, the pose object, the model and 6 floats.
+    const size_t at = methodOffset() + 4 + (1 + 20 + 1 + 24 + 1) + 4 + 24;
+    ASSERT_EQ(b[at], 10);
+    b[at + 3] = 0x7F;
+    const auto e = errorOf([&] { readBack(b); });
+    EXPECT_NE(e.find("particle count"), std::string::npos) << e;
+}
+
+TEST(MrptGuards, HugeContainerCountsAreRefused) {
+    registerAllClasses();
+    for (const bool frame : {false, true}) {
+        mrpt::io::CMemoryStream m;
+        auto w = mrpt::serialization::archiveFrom(m);
+        if (frame)
+            w << mrpt::obs::CSensoryFrame();
+        else
+            w << mrpt::obs::CActionCollection();
+        const auto* p = static_cast<const uint8_t*>(m.getRawBufferData());
+        std::vector<uint8_t> b(p, p + m.getTotalBytesCount());
+        const std::string name =
+            frame ? "mrpt::obs::CSensoryFrame" : "mrpt::obs::CActionCollection";
+        EXPECT_NO_THROW(readBack(b));
+        const size_t at = 1 + name.size() + 1;  // the uint32 count
+        b[at + 3] = 0xFF;
+        const auto e = errorOf([&] { readBack(b); });
+        EXPECT_NE(e.find(name + ": object count"), std::string::npos) << e;
+    }
+}
+
+namespace {
+template <class T>
+std::vector<uint8_t> serialized(const T& o) {
+    mrpt::io::CMemoryStream m;
+    auto w = mrpt::serialization::archiveFrom(m);
+    w << o;
+    const auto* p = static_cast<const uint8_t*>(m.getRawBufferData());
+    return std::vector<uint8_t>(p, p + m.getTotalBytesCount());
+}
+}  // namespace
+
+TEST(MrptGuards, OdometryLabelLengthIsBounded) {
+    registerAllClasses();
+    mrpt::obs::CObservationOdometry o;
+    o.sensorLabel = "ODOMETRY";
+    o.odometry = mrpt::poses::CPose2D(1, 2, 0.5);
+    auto b = serialized(o);
+    auto back = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(readBack(b));
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->sensorLabel, "ODOMETRY");
+    EXPECT_EQ(serialized(*back), b);
+    // The label follows the class header and the CPose2D object.
+    const size_t at = 1 + std::string("mrpt::obs::CObservationOdometry").size() + 1 + 47;
+    ASSERT_EQ(b[at], 8);
+    b[at + 3] = 0x7F;
+    const auto e = errorOf([&] { readBack(b); });
+    EXPECT_NE(e.find("sensorLabel length"), std::string::npos) << e;
+}
+
+TEST(MrptGuards, BearingRangeCountIsBounded) {
+    registerAllClasses();
+    mrpt::obs::CObservationBearingRange o;
+    o.sensorLabel = "RB";
+    o.maxSensorDistance = 0.5;
+    o.sensedData.resize(2);
+    o.sensedData[1].range = 0.25f;
+    o.sensedData[1].landmarkID = 7;
+    auto b = serialized(o);
+    auto back =
+        std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(readBack(b));
+    ASSERT_TRUE(back);
+    ASSERT_EQ(back->sensedData.size(), 2u);
+    EXPECT_EQ(back->sensedData[1].landmarkID, 7);
+    EXPECT_EQ(serialized(*back), b);
+    // Header, 4 floats, the CPose3D object, timestamp, flag, 3 deviations.
+    const size_t at = 1 + std::string("mrpt::obs::CObservationBearingRange").size() + 1 +
+                      16 + 119 + 8 + 1 + 12;
+    ASSERT_EQ(b[at], 2);
+    b[at + 3] = 0x40;
+    const auto e = errorOf([&] { readBack(b); });
+    EXPECT_NE(e.find("measurement count"), std::string::npos) << e;
+}

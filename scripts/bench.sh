@@ -7,7 +7,7 @@
 #
 #   bash scripts/bench.sh                 # full run, updates docs/
 #   bash scripts/bench.sh --quick         # smoke run (seconds), docs untouched
-#   bash scripts/bench.sh --out /tmp/b    # full run, results in /tmp/b only
+#   bash scripts/bench.sh --out-dir /tmp/b  # full run, results in /tmp/b only
 # Other options are passed to rfir-bench (see rfir-bench --help).
 # Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs),
 # RFIR_BENCH_NO_BUILD=1 (use the rfir-bench already built).
@@ -21,7 +21,7 @@ quick=0
 args=()
 while (($#)); do
   case "$1" in
-    --out) out="$2"; shift 2 ;;
+    --out-dir|--out) out="$2"; shift 2 ;;
     --quick) quick=1; args+=(--quick); shift ;;
     *) args+=("$1"); shift ;;
   esac
@@ -43,8 +43,7 @@ tmp=$(mktemp -d /tmp/rfir_bench_run_XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 
 # The source tree's INIs, as they are now (even if rfir-bench was not rebuilt).
-"$BUILD/bin/rfir-bench" --config-dir config_ini --json "$tmp/benchmark.json" \
-  --markdown "$tmp/results.md" --plots "$tmp" "${args[@]}" | tee "$tmp/table.txt"
+"$BUILD/bin/rfir-bench" --config-dir config_ini --out-dir "$tmp" "${args[@]}" | tee "$tmp/table.txt"
 
 cp "$tmp"/bench_*.png "$out/img/"
 if [ $update_docs -eq 1 ]; then

@@ -5,8 +5,8 @@
 # docs/img/exp_*.png. Builds rfir-experiments first if needed.
 #
 #   bash scripts/experiments.sh                      # every row, 8 seeds
-#   bash scripts/experiments.sh --quick --out /tmp/x # tiny runs (a minute)
-#   bash scripts/experiments.sh --rows t41,t42 --seeds 3 --out /tmp/y
+#   bash scripts/experiments.sh --quick --out-dir /tmp/x # tiny runs (a minute)
+#   bash scripts/experiments.sh --rows t41,t42 --seeds 3 --out-dir /tmp/y
 #   bash scripts/experiments.sh --list               # the row ids
 # Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs).
 set -euo pipefail
@@ -21,8 +21,8 @@ cmake --build "$BUILD" -j"$JOBS" --target rfir-experiments
 
 args=("$@")
 has_out=0
-for a in "${args[@]}"; do [ "$a" = "--out" ] && has_out=1; done
-[ $has_out -eq 1 ] || args+=(--out docs)
+for a in "${args[@]}"; do [ "$a" = "--out-dir" ] || [ "$a" = "--out" ] && has_out=1; done
+[ $has_out -eq 1 ] || args+=(--out-dir docs)
 # A snapshot of the INIs, as committed (uncommitted edits are not used; files
 # git does not track are taken as they are): results.md then matches a commit,
 # and a snapshot keeps a long run consistent while the tree is edited.

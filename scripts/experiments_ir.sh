@@ -6,7 +6,7 @@
 # odometry-only mode) -> outputs in $WORK/cli.
 #
 #   bash scripts/experiments_ir.sh                  # all, 5 seeds (~20 min on 2 cores)
-#   bash scripts/experiments_ir.sh --quick --out /tmp/ir   # smoke test (~3 min)
+#   bash scripts/experiments_ir.sh --quick --out-dir /tmp/ir   # smoke test (~3 min)
 #   bash scripts/experiments_ir.sh --only config,height --seeds 3
 # Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs),
 # RFIR_WORK (scratch, default /tmp/rfir-ir-experiments).
@@ -24,21 +24,21 @@ cmake --build "$BUILD" -j"$JOBS" --target rfir-ir-experiments rfir-sim rfir-loca
 args=("$@")
 out=""
 for ((i = 0; i < ${#args[@]}; i++)); do
-  if [ "${args[$i]}" = "--out" ]; then
-    [ $((i + 1)) -lt ${#args[@]} ] || { echo "experiments_ir.sh: --out needs a folder" >&2; exit 2; }
+  if [ "${args[$i]}" = "--out-dir" ] || [ "${args[$i]}" = "--out" ]; then
+    [ $((i + 1)) -lt ${#args[@]} ] || { echo "experiments_ir.sh: --out-dir needs a folder" >&2; exit 2; }
     out=${args[$((i + 1))]}
   fi
 done
-[ -n "$out" ] || { out=docs; args+=(--out docs); }
+[ -n "$out" ] || { out=docs; args+=(--out-dir docs); }
 
 # The source tree's INIs, as they are now (even if nothing was rebuilt).
-"$BUILD/bin/rfir-ir-experiments" --config-dir config_ini --work "$WORK" \
+"$BUILD/bin/rfir-ir-experiments" --config-dir config_ini --work-dir "$WORK" \
   --notes apps/rfir-localize/results_notes.md "${args[@]}"
 
 # The same thing through the programs, on one data set.
 cli="$WORK/cli"
 mkdir -p "$cli"
-"$BUILD/bin/rfir-ids" plan --room "0 0 3.2 2.4" --pitch 0.8 --height 1.5 --out "$cli/planned_emitters.txt"
+"$BUILD/bin/rfir-ids" plan --room "0 0 3.2 2.4" --pitch 0.8 --height 1.5 --output "$cli/planned_emitters.txt"
 "$BUILD/bin/rfir-sim" --config config_ini/sim_ir_loop.ini --out-dir "$cli" --name loop --seed 1 -q
 "$BUILD/bin/rfir-localize" --config config_ini/ir_localize.ini --rawlog "$cli/loop.rawlog" \
   --emitters "$cli/loop.gt_map.txt" --out-dir "$cli/mcl" --seed 1 -q

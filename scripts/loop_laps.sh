@@ -5,7 +5,7 @@
 # Prints a markdown table: mean robot error per lap and over the run, mm,
 # averaged over the seeds, with dead reckoning.
 #
-#   bash scripts/loop_laps.sh [--seeds N] [--out DIR]
+#   bash scripts/loop_laps.sh [--seeds N] [--out-dir DIR]
 # Runs the stock INIs as they are in config_ini/ (not the build copy);
 # relative paths are taken from the repository root.
 # Needs python3 and a build (build/bin); RFIR_BUILD_DIR overrides the build.
@@ -15,7 +15,7 @@ BIN=${RFIR_BUILD_DIR:-build}/bin
 SEEDS=12; OUT=out/loop_laps
 while [ $# -gt 0 ]; do
   case $1 in
-    --seeds|--out)
+    --seeds|--out-dir|--out)
       [ $# -ge 2 ] || { echo "loop_laps.sh: $1 needs a value" >&2; exit 2; }
       [ "$1" = --seeds ] && SEEDS=$2 || OUT=$2
       shift 2 ;;
@@ -33,7 +33,7 @@ mkdir -p "$OUT"
 for s in $(seq 1 "$SEEDS"); do
   echo "loop_laps.sh: seed $s of $SEEDS" >&2
   d="$OUT/seed$s"
-  "$BIN/rfir-sim" -q -c "$INI" -o "$d" -n run -s "$s" >/dev/null
+  "$BIN/rfir-sim" -q --config "$INI" --out-dir "$d" --name run --seed "$s" >/dev/null
   for m in pf ps fastslam; do
     # The source tree's stock INIs (the build's copy is refreshed only by a build).
     "$BIN/rfir-slam" --rawlog "$d/run.rawlog" --out-dir "$d/$m" --method "$m" \

@@ -9,6 +9,6 @@ if(TARGET rfir-experiments)
   set_tests_properties(experiments_smoke PROPERTIES TIMEOUT 180)
   # An unknown row is rejected with a non-zero exit.
   add_test(NAME experiments_bad_row
-    COMMAND rfir-experiments --rows no_such_row --out ${CMAKE_BINARY_DIR}/test_out/x)
+    COMMAND rfir-experiments --rows no_such_row --out-dir ${CMAKE_BINARY_DIR}/test_out/x)
   set_tests_properties(experiments_bad_row PROPERTIES WILL_FAIL TRUE)
 endif()

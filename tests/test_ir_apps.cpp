@@ -183,7 +183,8 @@ TEST(IRIds, PlannerCountsAndFile) {
     const std::string f = kDir + "/planned.txt";
     fs::create_directories(kDir);
     std::string out;
-    ASSERT_EQ(sh(kBin + "rfir-ids plan --room '0 0 3.2 2.4' --out '" + f + "'", &out), 0);
+    ASSERT_EQ(sh(kBin + "rfir-ids plan --room '0 0 3.2 2.4' --output '" + f + "'", &out),
+              0);
     EXPECT_NE(out.find("IDs used:          16"), std::string::npos) << out;
     const auto m = rfir::common::loadMapFile(f);
     EXPECT_EQ(m.size(), 32u);

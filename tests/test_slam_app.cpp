@@ -114,6 +114,38 @@ TEST(SlamApp, EveryMethodWithItsStockIni) {
     }
 }
 
+// The command-line conventions (rfir/common/cli.h) on a real run: --start as
+// one quoted argument is the same start; --set edits the INI (settings.ini
+// shows it); --config finds a stock INI by name; -q prints nothing.
+TEST(SlamApp, CommandLineConventions) {
+    const std::string d = dataDir(), in = " --rawlog " + d + "/run.rawlog --method pf";
+    auto r = run(in + " --out-dir " + d + "/c1 --start 0.5 0.5 0");
+    ASSERT_EQ(r.code, 0) << r.out;
+    r = run(in + " --out-dir " + d + "/c2 --start '0.5 0.5 0' --config slam_pf -q" +
+            " --set slam.robot_particles=50 --set motion.a1=0.03");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(r.out.find("rfir-slam:"), std::string::npos) << r.out;
+    const std::string settings = slurp(d + "/c2/settings.ini");
+    const size_t k = settings.find("robot_particles");
+    ASSERT_NE(k, std::string::npos) << settings;
+    const std::string line = settings.substr(k, settings.find('\n', k) - k);
+    std::istringstream value(line.substr(line.find('=') + 1));
+    int particles = 0;
+    value >> particles;
+    EXPECT_EQ(particles, 50) << line;
+    // Same start, other settings: the first pose is the same.
+    const auto p1 = rfir::common::loadTUM(d + "/c1/path.tum");
+    const auto p2 = rfir::common::loadTUM(d + "/c2/path.tum");
+    ASSERT_FALSE(p1.empty());
+    ASSERT_FALSE(p2.empty());
+    EXPECT_NEAR(p1.front().pose.x(), p2.front().pose.x(), 0.05);
+    EXPECT_NEAR(p1.front().pose.y(), p2.front().pose.y(), 0.05);
+    r = run(in + " --out-dir " + d + "/c3 --set slam.no_such_key=1");
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.out.find("no_such_key"), std::string::npos) << r.out;
+    EXPECT_FALSE(mrpt::system::directoryExists(d + "/c3"));
+}
+
 TEST(SlamApp, BadSettingsAreRefused) {
     const std::string d = dataDir(), ini = d + "/bad.ini";
     std::string text = slurp(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_pf.ini");

@@ -1,7 +1,7 @@
 # Run by ctest (experiments_smoke): runs rfir-experiments on a tiny row and
 # checks its outputs. -DEXE=... -DOUT=... -DCFG=...
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${EXE} --quick --rows t31_16 --seeds 2 --out ${OUT}
+execute_process(COMMAND ${EXE} --quick --rows t31_16 --seeds 2 --out-dir ${OUT}
                         --config-dir ${CFG}
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)

@@ -1,5 +1,6 @@
 /* rfir-import: converts a plain-text sensor log (textlog 1) into a rawlog in
  * the project's layout, or a rawlog back into a text log. See docs/import.md. */
+#include <rfir/common/cli.h>
 #include <rfir/common/log_convert.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -63,15 +64,8 @@ int main(int argc, char** argv) {
                                cmd, false);
         TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on stderr", cmd,
                                false);
-        if (!cmd.parse(argc, argv)) {
-            // MRPT's TCLAP returns false both after --help/--version and after
-            // printing a command-line error.
-            for (int i = 1; i < argc; i++) {
-                const std::string a = argv[i];
-                if (a == "-h" || a == "--help" || a == "--version") return 0;
-            }
-            return 2;
-        }
+        if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
+            return *code;
         return run(in.getValue(), out.getValue(), lossy.getValue(), quiet.getValue());
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";

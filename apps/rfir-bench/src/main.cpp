@@ -4,6 +4,7 @@
 #include "bench.h"
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/cli.h>
 #include <rfir/common/install_paths.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -42,27 +44,6 @@ double loadAverage() {
     return l;
 }
 
-std::vector<size_t> parseList(const std::string& opt, const std::string& s) {
-    std::vector<size_t> v;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        size_t pos = 0;
-        unsigned long long x = 0;
-        try {
-            x = std::stoull(item, &pos);
-        } catch (const std::exception&) {
-            pos = 0;
-        }
-        if (pos == 0 || pos != item.size() || x == 0)
-            throw std::invalid_argument(opt + ": '" + item +
-                                        "' is not a positive integer");
-        v.push_back(size_t(x));
-    }
-    if (v.empty()) throw std::invalid_argument(opt + ": empty list");
-    return v;
-}
-
 std::vector<std::string> parseMethods(const std::string& s) {
     std::vector<std::string> v;
     std::stringstream ss(s);
@@ -77,8 +58,12 @@ std::vector<std::string> parseMethods(const std::string& s) {
     return v;
 }
 
-bool skipped(const TCaseResult& c) { return c.skipped; }
-bool skipped(const TFloorResult&) { return false; }
+bool skipped(const TCaseResult& c) {
+    return c.skipped;
+}
+bool skipped(const TFloorResult&) {
+    return false;
+}
 
 /** v[i] keeps the fastest (median) of the rounds of one case or floor. */
 template <typename T>
@@ -89,10 +74,10 @@ void keepFastest(std::vector<T>& v, size_t i, const T& c) {
         v[i] = c;
 }
 
-void runAll(TBenchReport& r) {
+void runAll(TBenchReport& r, bool quiet) {
     const auto& o = r.options;
-    auto progress = [](const std::string& s) {
-        std::cerr << "rfir-bench: " << s << std::endl;
+    auto progress = [quiet](const std::string& s) {
+        if (!quiet) std::cerr << "rfir-bench: " << s << std::endl;
     };
     std::vector<size_t> floorM = o.sweepM;
     if (std::find(floorM.begin(), floorM.end(), o.fixedM) == floorM.end())
@@ -142,10 +127,11 @@ void setQuick(TBenchOptions& o) {
 
 struct TOutputs {
     std::string json, markdown, plots;
+    bool quiet = false;
 };
 
-/** The command line; false after --help or --version. */
-bool parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& out) {
+/** The command line; an exit code after --help, --version or an error. */
+std::optional<int> parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& out) {
     TCLAP::CmdLine cmd(
         "rfir-bench: time per SLAM update of PS-SLAM, PF-SLAM and FastSLAM against the "
         "number of robot particles M and of mapped tags N, the state's memory, a floor "
@@ -154,6 +140,10 @@ bool parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& out) {
         ' ', "0.1");
     TCLAP::SwitchArg quick("", "quick", "smoke run: M 100,500; N 10,1000; 20 updates",
                            cmd);
+    TCLAP::ValueArg<std::string> outDir(
+        "", "out-dir",
+        "write DIR/benchmark.json, DIR/results.md and DIR/bench_*.png (created)", false,
+        "", "DIR", cmd);
     TCLAP::ValueArg<std::string> json("", "json", "write JSON", false, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> md("", "markdown", "write Markdown tables", false, "",
                                     "FILE", cmd);
@@ -162,33 +152,32 @@ bool parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& out) {
     TCLAP::ValueArg<std::string> ms("", "m", "robot particle counts", false, "", "LIST",
                                     cmd);
     TCLAP::ValueArg<std::string> ns("", "n", "mapped tag counts", false, "", "LIST", cmd);
-    TCLAP::ValueArg<size_t> updates("", "updates", "timed updates per case (200)", false,
-                                    200, "K", cmd);
-    TCLAP::ValueArg<size_t> rounds(
-        "", "rounds", "rounds; each case keeps its fastest (3)", false, 3, "R", cmd);
-    TCLAP::ValueArg<double> maxMN("", "max-fastslam-mn",
-                                  "skip FastSLAM above this M*N (5e7)", false, 5e7, "X",
-                                  cmd);
-    TCLAP::ValueArg<double> rtSec("", "realtime-seconds",
-                                  "robot time of the whole runs (1200)", false, 1200, "S",
-                                  cmd);
+    using rfir::common::CNumberArg;
+    CNumberArg<size_t> updates("", "updates", "timed updates per case (200)", false, 200,
+                               "K", cmd, 1);
+    CNumberArg<size_t> rounds("", "rounds", "rounds; each case keeps its fastest (3)",
+                              false, 3, "R", cmd, 1);
+    CNumberArg<double> maxMN("", "max-fastslam-mn", "skip FastSLAM above this M*N (5e7)",
+                             false, 5e7, "X", cmd, 0);
+    CNumberArg<double> rtSec("", "realtime-seconds",
+                             "robot time of the whole runs (1200)", false, 1200, "S", cmd,
+                             1e-3);
     TCLAP::ValueArg<std::string> methods("", "methods", "subset of ps,pf,fastslam", false,
                                          "", "LIST", cmd);
     TCLAP::SwitchArg noRealtime("", "no-realtime", "skip the whole offline runs", cmd);
     TCLAP::ValueArg<std::string> cfgDir("", "config-dir", "folder of the stock INIs",
                                         false, "", "DIR", cmd);
-    TCLAP::ValueArg<uint64_t> seed("", "seed", "random seed (1)", false, 1, "N", cmd);
-    if (!cmd.parse(argc, argv)) return false;
+    CNumberArg<uint64_t> seed("", "seed", "random seed (1)", false, 1, "N", cmd);
+    TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr", cmd);
+    if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv)) return code;
 
     if (quick.getValue()) setQuick(o);
     if (rounds.isSet()) o.rounds = rounds.getValue();
-    if (o.rounds == 0) throw std::invalid_argument("--rounds must be > 0");
-    if (ms.isSet()) o.sweepM = parseList("--m", ms.getValue());
-    if (ns.isSet()) o.sweepN = parseList("--n", ns.getValue());
-    for (size_t N : o.sweepN)
-        if (N < 8) throw std::invalid_argument("--n: every N must be >= 8");
+    if (ms.isSet())
+        o.sweepM = rfir::common::parseNumberList<size_t>("--m", ms.getValue(), ',', 0, 1);
+    if (ns.isSet())
+        o.sweepN = rfir::common::parseNumberList<size_t>("--n", ns.getValue(), ',', 0, 8);
     if (updates.isSet()) o.timedUpdates = updates.getValue();
-    if (o.timedUpdates == 0) throw std::invalid_argument("--updates must be > 0");
     if (rtSec.isSet()) o.realtimeSeconds = rtSec.getValue();
     if (!(o.realtimeSeconds > 0))
         throw std::invalid_argument("--realtime-seconds must be > 0");
@@ -197,10 +186,18 @@ bool parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& out) {
     o.realtime = !noRealtime.getValue();
     o.seed = seed.getValue();
     o.configDir = cfgDir.isSet() ? cfgDir.getValue() : defaultConfigDir();
-    out = {json.getValue(), md.getValue(), plots.getValue()};
+    out = {json.getValue(), md.getValue(), plots.getValue(), quiet.getValue()};
+    if (outDir.isSet()) {
+        const std::string d = outDir.getValue();
+        if (!mrpt::system::directoryExists(d) && !mrpt::system::createDirectory(d))
+            throw std::invalid_argument("--out-dir: cannot create '" + d + "'");
+        if (out.json.empty()) out.json = d + "/benchmark.json";
+        if (out.markdown.empty()) out.markdown = d + "/results.md";
+        if (out.plots.empty()) out.plots = d;
+    }
     if (!out.plots.empty() && !mrpt::system::directoryExists(out.plots))
         throw std::invalid_argument("--plots: no folder '" + out.plots + "'");
-    return true;
+    return std::nullopt;
 }
 }  // namespace
 
@@ -208,10 +205,15 @@ int main(int argc, char** argv) {
     try {
         TBenchReport r;
         TOutputs out;
-        if (!parseArgs(argc, argv, r.options, out)) return 0;
+        try {
+            if (const auto code = parseArgs(argc, argv, r.options, out)) return *code;
+        } catch (const std::invalid_argument& e) {  // a bad value: before any work
+            std::cerr << "rfir-bench: error: " << e.what() << "\n";
+            return rfir::common::kUsageExitCode;
+        }
         r.host = hostDescription();
         r.loadBefore = loadAverage();
-        runAll(r);
+        runAll(r, out.quiet);
         r.loadAfter = loadAverage();
         evaluate(r);
         printTable(r, std::cout);

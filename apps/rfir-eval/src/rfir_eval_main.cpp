@@ -1,6 +1,7 @@
 /* rfir-eval: errors of an estimated path and map against the ground truth, in
  * the seeds' table layout (mm, rad) and as one JSON line; optional PNG figure. */
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/cli.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
@@ -17,7 +18,8 @@ using rfir::common::TMapEntry;
 struct TArgs {
     std::string path, gtPath, map, gtMap, rawlog, label, plot, errorPlot, title, jsonFile,
         kind;
-    bool jsonOnly = false, noOdometry = false, ids = false, atGtTimes = false;
+    bool jsonOnly = false, noOdometry = false, ids = false, atGtTimes = false,
+         quiet = false;
     int segments = 0;
 };
 
@@ -49,15 +51,10 @@ struct TExit {
     int code;
 };
 
-/** MRPT's TCLAP returns false both after --help/--version and after printing a
- * usage error. */
+/** Ends the program after --help / --version (0) or a parse error. */
 void parseOrExit(TCLAP::CmdLine& cmd, int argc, char** argv) {
-    if (cmd.parse(argc, argv)) return;
-    for (int i = 1; i < argc; i++) {
-        const std::string s = argv[i];
-        if (s == "-h" || s == "--help" || s == "--version") throw TExit{0};
-    }
-    throw TExit{2};
+    if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
+        throw TExit{*code};
 }
 
 TArgs parse(int argc, char** argv) {
@@ -98,17 +95,19 @@ TArgs parse(int argc, char** argv) {
         "OUT.png", cmd);
     TCLAP::ValueArg<std::string> title("", "title", "figure title (default: the label)",
                                        false, "", "TEXT", cmd);
-    TCLAP::ValueArg<int> segments(
+    rfir::common::CNumberArg<int> segments(
         "", "segments",
         "also give the robot's mean error in N equal windows of the ground truth's "
         "time span (e.g. the laps of a loop)",
-        false, 0, "N", cmd);
+        false, 0, "N", cmd, 0, 1000000);
     TCLAP::SwitchArg ids("", "ids", "write landmark IDs on the figure", cmd);
     TCLAP::ValueArg<std::string> jsonFile("", "json-file",
                                           "also write the JSON line to "
                                           "FILE (atomically)",
                                           false, "", "FILE", cmd);
     TCLAP::SwitchArg jsonOnly("", "json-only", "print only the JSON line", cmd);
+    TCLAP::SwitchArg quiet(
+        "q", "quiet", "print nothing on stdout (write only the files asked for)", cmd);
     parseOrExit(cmd, argc, argv);
     TArgs a;
     a.path = path.getValue(), a.gtPath = gtPath.getValue(), a.map = map.getValue();
@@ -120,6 +119,7 @@ TArgs parse(int argc, char** argv) {
     a.atGtTimes = atGt.getValue();
     a.errorPlot = errorPlot.getValue();
     a.segments = segments.getValue();
+    a.quiet = quiet.getValue();
     validate(a);
     return a;
 }
@@ -213,6 +213,7 @@ int run(const TArgs& a) {
     if (!a.jsonFile.empty())
         rfir::common::writeFileAtomically(a.jsonFile,
                                           [&](std::ostream& o) { o << json << "\n"; });
+    if (a.quiet) return 0;
     if (!a.jsonOnly) std::cout << formatErrorTable({r}) << "\n";
     std::cout << json << std::endl;
     return 0;

@@ -5,6 +5,7 @@
 #include "report.h"
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/cli.h>
 #include <rfir/common/install_paths.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -44,7 +45,8 @@ std::vector<TRow> selectRows(const std::string& list, bool quick) {
 
 /** Every (point, sub-run, seed, method) of a row. */
 TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds,
-                   const std::string& cfgDir, size_t idx, size_t nRows) {
+                   const std::string& cfgDir, size_t idx, size_t nRows, bool quiet) {
+    FILE* log = quiet ? nullptr : stderr;
     if (row.maxSeeds && seeds.size() > row.maxSeeds) seeds.resize(row.maxSeeds);
     TRowResults res;
     res.row = row;
@@ -54,31 +56,34 @@ TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds,
                 const auto t0 = Clock::now();
                 auto data = simulateDataSet(cfgDir, row.runs[k], row.points[p], seed);
                 const bool first = p == 0 && k == 0 && seed == seeds.front();
-                std::fprintf(
-                    stderr, "[%zu/%zu] %s %s%s%s seed %llu (%zu steps):", idx + 1, nRows,
-                    row.id.c_str(), row.points[p].label.c_str(),
-                    row.points[p].label.empty() ? "" : " ", row.runs[k].label.c_str(),
-                    (unsigned long long)seed, data.sim.steps.size());
+                if (log)
+                    std::fprintf(
+                        log, "[%zu/%zu] %s %s%s%s seed %llu (%zu steps):", idx + 1, nRows,
+                        row.id.c_str(), row.points[p].label.c_str(),
+                        row.points[p].label.empty() ? "" : " ", row.runs[k].label.c_str(),
+                        (unsigned long long)seed, data.sim.steps.size());
                 for (const auto& m : row.methods) {
                     auto r = runMethod(cfgDir, data, m, row.points[p], seed, first);
                     r.point = p;
                     r.run = k;
-                    std::fprintf(stderr, " %s %.0f/%.0f mm", m.label.c_str(),
-                                 1e3 * robotMeanDist(r), 1e3 * tagMeanDist(r));
+                    if (log)
+                        std::fprintf(log, " %s %.0f/%.0f mm", m.label.c_str(),
+                                     1e3 * robotMeanDist(r), 1e3 * tagMeanDist(r));
                     if (first) res.firstRuns.push_back(r);
                     r.estPath.clear();
                     r.estMap.clear();
                     r.eval.robot->perPose.clear();
                     res.runs.push_back(std::move(r));
                 }
-                std::fprintf(stderr, " (%.1f s)\n", since(t0));
+                if (log) std::fprintf(log, " (%.1f s)\n", since(t0));
                 if (first) res.firstData = std::move(data);
             }
     return res;
 }
 
 void writeOutputs(const std::string& out, const std::vector<TRowResults>& results,
-                  const TMeta& meta, const std::string& notesFile, bool figures) {
+                  const TMeta& meta, const std::string& notesFile, bool figures,
+                  bool quiet) {
     std::string notes;
     if (!notesFile.empty()) {
         std::ifstream f(notesFile);
@@ -93,8 +98,9 @@ void writeOutputs(const std::string& out, const std::vector<TRowResults>& result
     const std::string md = markdownReport(results, meta, notes);
     rfir::common::writeFileAtomically(out + "/results.md",
                                       [&](std::ostream& o) { o << md; });
-    std::cerr << "rfir-experiments: wrote " << out << "/results.md, results.json"
-              << (figures ? ", img/exp_*.png" : "") << "\n";
+    if (!quiet)
+        std::cerr << "rfir-experiments: wrote " << out << "/results.md, results.json"
+                  << (figures ? ", img/exp_*.png" : "") << "\n";
 }
 }  // namespace
 
@@ -111,16 +117,19 @@ int main(int argc, char** argv) {
                                           "see --list)",
                                           false, "all", "IDS", cmd);
         TCLAP::SwitchArg list("", "list", "list the rows and exit", cmd);
-        TCLAP::ValueArg<unsigned> seeds(
-            "", "seeds", "seeds per row (default 8, --quick 1)", false, 0, "N", cmd);
-        TCLAP::ValueArg<uint64_t> firstSeed(
-            "", "first-seed", "seeds are S, S+1, ... (default 1)", false, 1, "S", cmd);
+        rfir::common::CNumberArg<unsigned> seeds("", "seeds",
+                                                 "seeds per row (default 8, --quick 1)",
+                                                 false, 0, "N", cmd, 1, 100000);
+        rfir::common::CNumberArg<uint64_t> firstSeed(
+            "", "seed", "first seed: seeds are S, S+1, ... (default 1)", false, 1, "S",
+            cmd);
         TCLAP::SwitchArg quick("", "quick",
                                "tiny runs: first sub-run, sweep end points, "
                                "40 s of simulated time",
                                cmd);
-        TCLAP::ValueArg<std::string> out(
-            "", "out", "output folder (required unless --list)", false, "", "DIR", cmd);
+        TCLAP::ValueArg<std::string> out("", "out-dir",
+                                         "output folder (required unless --list)", false,
+                                         "", "DIR", cmd);
         TCLAP::ValueArg<std::string> cfgDir(
             "", "config-dir",
             "folder of the sim_*.ini and "
@@ -133,17 +142,29 @@ int main(int argc, char** argv) {
                                               "the report (e.g. git describe)",
                                               false, "", "TEXT", cmd);
         TCLAP::SwitchArg noFig("", "no-figures", "do not draw the PNG figures", cmd);
-        if (!cmd.parse(argc, argv)) return 0;
+        TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr", cmd);
+        if (const auto code = rfir::common::parseCommandLine(
+                cmd, argc, argv, {{"--out", "--out-dir"}, {"--first-seed", "--seed"}}))
+            return *code;
 
-        const auto selected = selectRows(rows.getValue(), quick.getValue());
+        std::vector<TRow> selected;
+        try {  // usage errors: exit as a parse error does
+            selected = selectRows(rows.getValue(), quick.getValue());
+            if (!list.getValue() && out.getValue().empty())
+                throw std::invalid_argument("--out-dir DIR is required");
+            if (notes.isSet() && !mrpt::system::fileExists(notes.getValue()))
+                throw std::invalid_argument("--notes: cannot read '" + notes.getValue() +
+                                            "'");
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "rfir-experiments: error: " << e.what() << "\n";
+            return rfir::common::kUsageExitCode;
+        }
         if (list.getValue()) {
             for (const auto& r : allRows(false))
                 std::cout << r.id << "\t" << r.source << ": " << r.title << "\n";
             return 0;
         }
-        if (out.getValue().empty()) throw std::invalid_argument("--out DIR is required");
         const unsigned n = seeds.isSet() ? seeds.getValue() : quick.getValue() ? 1 : 8;
-        if (n == 0) throw std::invalid_argument("--seeds must be at least 1");
         TMeta meta;
         meta.quick = quick.getValue();
         meta.revision = revision.getValue();
@@ -160,10 +181,11 @@ int main(int argc, char** argv) {
         const auto t0 = Clock::now();
         std::vector<TRowResults> results;
         for (size_t i = 0; i < selected.size(); i++)
-            results.push_back(
-                runRow(selected[i], meta.seeds, cfgDir.getValue(), i, selected.size()));
+            results.push_back(runRow(selected[i], meta.seeds, cfgDir.getValue(), i,
+                                     selected.size(), quiet.getValue()));
         meta.wallSeconds = since(t0);
-        writeOutputs(out.getValue(), results, meta, notes.getValue(), !noFig.getValue());
+        writeOutputs(out.getValue(), results, meta, notes.getValue(), !noFig.getValue(),
+                     quiet.getValue());
         return 0;
     } catch (const std::exception& e) {
         std::cerr << "rfir-experiments: error: " << e.what() << "\n";

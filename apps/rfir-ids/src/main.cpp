@@ -2,8 +2,9 @@
  *   rfir-ids encode --codes 3,9           -> 39
  *   rfir-ids decode --id 39               -> codes, frequencies, type
  *   rfir-ids count [--frequencies 30 --max-codes 6]   -> 768211
- *   rfir-ids plan --room "0 0 3.2 2.4" [--pitch 0.8] [--out emitters.txt]
+ *   rfir-ids plan --room "0 0 3.2 2.4" [--pitch 0.8] [--output emitters.txt]
  *   rfir-ids memory --grid "600 400" [--repeated-ids 9]  -> thesis 5.3 sizes */
+#include <rfir/common/cli.h>
 #include <rfir/common/map_io.h>
 #include <rfir/ir/id_planner.h>
 #include <rfir/obs/ir_codes.h>
@@ -14,6 +15,7 @@
 #include <sstream>
 
 using namespace rfir::ir;
+using rfir::common::CNumberArg;
 
 namespace {
 struct TArgs {
@@ -25,42 +27,42 @@ struct TArgs {
         "", "codes", "encode: codes, e.g. 3,9", false, "", "LIST", cmd};
     TCLAP::ValueArg<std::string> id{"",   "id", "decode: emitter ID, e.g. 39", false, "",
                                     "ID", cmd};
-    TCLAP::ValueArg<int> freqs{
-        "", "frequencies", "count: number of frequencies", false, kNumCodes, "N", cmd};
-    TCLAP::ValueArg<int> maxCodes{
-        "",    "max-codes", "count: most codes per ID (microcontroller pins)",
+    // 60 keeps every binomial sum of countIds within 64 bits.
+    CNumberArg<int> freqs{"",
+                          "frequencies",
+                          "count: number of frequencies (1-60)",
+                          false,
+                          kNumCodes,
+                          "N",
+                          cmd,
+                          1,
+                          60};
+    CNumberArg<int> maxCodes{
+        "",    "max-codes", "count: most codes per ID (microcontroller pins, 1-60)",
         false, kNumCodes,   "K",
-        cmd};
+        cmd,   1,           60};
     TCLAP::ValueArg<std::string> room{
         "", "room", "plan: \"min_x min_y max_x max_y\" (m)", false, "", "BOX", cmd};
-    TCLAP::ValueArg<double> pitch{
-        "", "pitch", "plan: same-type emitter spacing (m)", false, 0.8, "M", cmd};
-    TCLAP::ValueArg<double> height{
-        "", "height", "plan: emitter height above floor (m)", false, 1.5, "M", cmd};
+    CNumberArg<double> pitch{
+        "", "pitch", "plan: same-type emitter spacing (m)", false, 0.8, "M", cmd, 0};
+    CNumberArg<double> height{
+        "", "height", "plan: emitter height above floor (m)", false, 1.5, "M", cmd, 0};
     TCLAP::ValueArg<std::string> repCodes{
         "", "repeated-codes", "plan: codes of the repeated IDs", false, "1,2,3,4", "LIST",
         cmd};
-    TCLAP::ValueArg<int> uniqueCodes{
-        "", "unique-codes", "plan: codes per unique ID (2-9)", false, 2, "K", cmd};
+    CNumberArg<int> uniqueCodes{
+        "", "unique-codes", "plan: codes per unique ID (2-9)", false, 2, "K", cmd, 2, 9};
     TCLAP::SwitchArg allUnique{
         "", "all-unique", "plan: the same positions, every emitter a unique ID", cmd};
     TCLAP::ValueArg<std::string> out{
-        "", "out", "plan: emitter file to write", false, "", "FILE", cmd};
+        "o", "output", "plan: emitter file to write", false, "", "FILE", cmd};
     TCLAP::ValueArg<std::string> grid{
         "", "grid", "memory: \"L W\" repeated grid lines", false, "", "L W", cmd};
-    TCLAP::ValueArg<int> repIds{
-        "", "repeated-ids", "memory: repeated IDs used", false, 9, "N", cmd};
+    CNumberArg<uint64_t> repIds{
+        "", "repeated-ids",  "memory: repeated IDs used", false, 9, "N", cmd,
+        0,  1000000000000ULL};
+    TCLAP::SwitchArg quiet{"q", "quiet", "plan: no \"wrote FILE\" line", cmd};
 };
-
-std::vector<double> numbers(const std::string& s, size_t n, const char* what) {
-    std::istringstream in(s);
-    std::vector<double> v;
-    for (double x; in >> x;) v.push_back(x);
-    if (v.size() != n || !in.eof())
-        throw std::runtime_error(std::string(what) + ": expected " + std::to_string(n) +
-                                 " numbers, got '" + s + "'");
-    return v;
-}
 
 int cmdEncode(TArgs& a) {
     const auto c = parseCodeList(a.codes.getValue());
@@ -85,7 +87,8 @@ int cmdDecode(TArgs& a) {
 
 int cmdPlan(TArgs& a) {
     if (!a.room.isSet()) throw std::runtime_error("plan: --room is required");
-    const auto b = numbers(a.room.getValue(), 4, "--room");
+    const auto b =
+        rfir::common::parseNumberList<double>("--room", a.room.getValue(), ' ', 4);
     TRoom room{b[0], b[1], b[2], b[3]};
     TLatticeParams p;
     p.pitch = a.pitch.getValue();
@@ -102,17 +105,19 @@ int cmdPlan(TArgs& a) {
         rfir::common::saveMapFile(a.out.getValue(), f,
                                   "rfir-ids plan --room \"" + a.room.getValue() +
                                       "\" --pitch " + std::to_string(p.pitch));
-        std::cout << "wrote " << a.out.getValue() << "\n";
+        if (!a.quiet.getValue()) std::cout << "wrote " << a.out.getValue() << "\n";
     }
     return 0;
 }
 
 int cmdMemory(TArgs& a) {
-    const auto g = numbers(a.grid.getValue(), 2, "--grid");
-    if (g[0] < 2 || g[1] < 2) throw std::runtime_error("--grid: L and W must be >= 2");
-    const auto L = uint64_t(g[0]), W = uint64_t(g[1]);
+    if (!a.grid.isSet()) throw std::runtime_error("memory: --grid is required");
+    // Bounded so that the record counts stay within 64 bits.
+    const auto g = rfir::common::parseNumberList<uint64_t>("--grid", a.grid.getValue(),
+                                                           ' ', 2, 2, 1000000);
+    const uint64_t L = g[0], W = g[1];
     std::cout << "mixed layout records:       "
-              << mixedLayoutRecords(L, W, uint64_t(a.repIds.getValue()))
+              << mixedLayoutRecords(L, W, a.repIds.getValue())
               << "\nunique-only layout records: " << uniqueOnlyLayoutRecords(L, W)
               << "\n";
     return 0;
@@ -122,7 +127,9 @@ int cmdMemory(TArgs& a) {
 int main(int argc, char** argv) {
     TArgs a;
     try {
-        a.cmd.parse(argc, argv);
+        if (const auto code = rfir::common::parseCommandLine(a.cmd, argc, argv,
+                                                             {{"--out", "--output"}}))
+            return *code;
         const std::string c = a.command.getValue();
         if (c == "encode") return cmdEncode(a);
         if (c == "decode") return cmdDecode(a);

@@ -4,6 +4,7 @@
 #include "localize_output.h"
 #include "localize_run.h"
 
+#include <rfir/common/cli.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -75,9 +76,12 @@ int main(int argc, char** argv) {
         false, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", true, "", "DIR",
                                         cmd);
-    TCLAP::ValueArg<std::string> config("", "config", "INI file (default: the stock one)",
-                                        false, "", "INI", cmd);
-    TCLAP::ValueArg<uint64_t> seed("", "seed", "random seed", false, 1, "N", cmd);
+    TCLAP::ValueArg<std::string> config(
+        "", "config",
+        "INI file, or a stock one by name (e.g. ir_localize); default: the stock one",
+        false, "", "INI", cmd);
+    rfir::common::CNumberArg<uint64_t> seed("", "seed", "random seed (default 1)", false,
+                                            1, "N", cmd);
     TCLAP::SwitchArg odoOnly("", "odometry-only",
                              "dead reckoning only, from the start pose (comparison)",
                              cmd);
@@ -89,11 +93,13 @@ int main(int argc, char** argv) {
     TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr, no table on stdout",
                            cmd);
     try {
-        cmd.parse(argc, argv);
+        if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
+            return *code;
         rfir::obs::registerAllClasses();
         rfir::maps::registerIRClasses();
         rfir::localize::TConfig cfg;
-        cfg.iniPath = config.isSet() ? config.getValue() : rfir::localize::stockIniPath();
+        cfg.iniPath = config.isSet() ? rfir::common::resolveConfigFile(config.getValue())
+                                     : rfir::localize::stockIniPath();
         cfg.rawlogPath = rawlog.getValue();
         cfg.outDir = outDir.getValue();
         cfg.seed = seed.getValue();

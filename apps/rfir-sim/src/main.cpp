@@ -1,5 +1,6 @@
 /* rfir-sim: simulates one run of the seeds' setups from an INI file and writes
  * its rawlog and ground truth. See docs/simulator.md. */
+#include <rfir/common/cli.h>
 #include <rfir/obs/registerAllClasses.h>
 #include <rfir/sim/simulator.h>
 
@@ -10,8 +11,7 @@
 #include <filesystem>
 #include <iostream>
 
-namespace
-{
+namespace {
 const char* kDescription =
     "Simulates an omnidirectional robot with HF RFID readers over a tag carpet, IR "
     "receivers under a ceiling emitter lattice and/or a range-and-bearing sensor, as "
@@ -20,42 +20,39 @@ const char* kDescription =
     "landmarks) and, when the trajectory has marked spots, DIR/NAME.spots.tum. The same "
     "INI and seed give byte-identical files.";
 
-int run(const std::string& ini, const std::vector<std::string>& sets, const std::string& dir,
-        uint64_t seed, std::string name, bool quiet)
-{
+int run(const std::string& ini, const std::vector<std::string>& sets,
+        const std::string& dir, uint64_t seed, std::string name, bool quiet) {
     namespace fs = std::filesystem;
     const auto cfg = rfir::sim::loadSimConfig(ini, sets);
     if (name.empty()) name = fs::path(ini).stem().string();
-    if (name.empty() || name.find('/') != std::string::npos)
-    {
+    if (name.empty() || name.find('/') != std::string::npos) {
         std::cerr << "error: --name '" << name << "' is not a file name\n";
         return 2;
     }
     std::error_code ec;
     fs::create_directories(dir, ec);
-    if (!fs::is_directory(dir))
-    {
+    if (!fs::is_directory(dir)) {
         std::cerr << "error: " << dir << ": cannot create the output directory\n";
         return 1;
     }
     // Nothing here uses MRPT's global generator; seeded anyway for any MRPT code
     // that would.
     mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
-    if (!quiet) std::cerr << "rfir-sim: " << ini << " seed " << seed << ": simulating...\n";
-    const auto out = rfir::sim::simulate(cfg, seed);
     if (!quiet)
-    {
+        std::cerr << "rfir-sim: " << ini << " seed " << seed << ": simulating...\n";
+    const auto out = rfir::sim::simulate(cfg, seed);
+    if (!quiet) {
         size_t det = 0;
         for (const auto& s : out.steps)
             for (const auto& o : s.obs)
-                if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
+                if (auto r =
+                        std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
                     det += r->detectionCount();
         // Odometry alone against the truth: how much there is to correct.
         double sumErr = 0, maxErr = 0;
         size_t nOdo = 0;
         for (const auto& s : out.steps)
-            if (s.odometry)
-            {
+            if (s.odometry) {
                 const double e = s.odometry->distanceTo(s.truePose);
                 sumErr += e, maxErr = std::max(maxErr, e), nOdo++;
             }
@@ -71,18 +68,18 @@ int run(const std::string& ini, const std::vector<std::string>& sets, const std:
 }
 }  // namespace
 
-int main(int argc, char** argv)
-{
-    try
-    {
+int main(int argc, char** argv) {
+    try {
         rfir::obs::registerAllClasses();
         TCLAP::CmdLine cmd(kDescription, ' ', "1.0");
-        TCLAP::ValueArg<std::string> ini("c", "config", "simulation INI file", true, "",
-                                         "INI", cmd);
-        TCLAP::ValueArg<std::string> dir("o", "out-dir", "output directory (created)",
+        TCLAP::ValueArg<std::string> ini(
+            "c", "config",
+            "simulation INI file, or a stock one by name (e.g. sim_kidnap)", true, "",
+            "INI", cmd);
+        TCLAP::ValueArg<std::string> dir("", "out-dir", "output directory (created)",
                                          true, "", "DIR", cmd);
-        TCLAP::ValueArg<uint64_t> seed("s", "seed", "random seed (default 1)", false, 1,
-                                       "N", cmd);
+        rfir::common::CNumberArg<uint64_t> seed("s", "seed", "random seed (default 1)",
+                                                false, 1, "N", cmd);
         TCLAP::ValueArg<std::string> name("n", "name",
                                           "output file stem (default: the INI's stem)",
                                           false, "", "NAME", cmd);
@@ -91,22 +88,13 @@ int main(int argc, char** argv)
             "override an INI key, e.g. --set trajectory.speed=0.3 (repeatable)", false,
             "SECTION.KEY=VALUE", cmd);
         TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr", cmd, false);
-        if (!cmd.parse(argc, argv))
-        {
-            // MRPT's TCLAP returns false both after --help/--version and after
-            // printing a command-line error.
-            for (int i = 1; i < argc; i++)
-            {
-                const std::string a = argv[i];
-                if (a == "-h" || a == "--help" || a == "--version") return 0;
-            }
-            return 2;
-        }
-        return run(ini.getValue(), sets.getValue(), dir.getValue(), seed.getValue(), name.getValue(),
-                   quiet.getValue());
-    }
-    catch (const std::exception& e)
-    {
+        // -o was the folder here but is a file elsewhere (rfir-import).
+        if (const auto code =
+                rfir::common::parseCommandLine(cmd, argc, argv, {{"-o", "--out-dir"}}))
+            return *code;
+        return run(rfir::common::resolveConfigFile(ini.getValue()), sets.getValue(),
+                   dir.getValue(), seed.getValue(), name.getValue(), quiet.getValue());
+    } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
     }

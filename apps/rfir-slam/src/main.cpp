@@ -1,36 +1,15 @@
 /* rfir-slam: offline SLAM (PF-SLAM, PS-SLAM, FastSLAM 1.0) on a rawlog. */
 #include "slam_app.h"
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <rfir/common/cli.h>
 
-#include <cstring>
 #include <iostream>
-#include <sstream>
 #include <vector>
 
 namespace {
-/** TCLAP takes one token per value: fold "--start X Y PHI" into one token
- * (negative numbers would otherwise look like flags). */
-std::vector<std::string> foldStart(int argc, char** argv) {
-    std::vector<std::string> args(argv, argv + argc);
-    for (size_t i = 1; i < args.size(); i++)
-        if (args[i] == "--start") {
-            if (i + 3 >= args.size())
-                throw std::invalid_argument("--start needs three numbers: X Y PHI");
-            args[i + 1] = args[i + 1] + " " + args[i + 2] + " " + args[i + 3];
-            args.erase(args.begin() + i + 2, args.begin() + i + 4);
-        }
-    return args;
-}
-
 mrpt::poses::CPose2D parseStart(const std::string& s) {
-    std::istringstream is(s);
-    double x, y, phi;
-    std::string extra;
-    if (!(is >> x >> y >> phi) || (is >> extra))
-        throw std::invalid_argument("--start needs three numbers: X Y PHI (got '" + s +
-                                    "')");
-    return {x, y, phi};
+    const auto v = rfir::common::parseNumberList<double>("--start X Y PHI", s, ' ', 3);
+    return {v[0], v[1], v[2]};
 }
 }  // namespace
 
@@ -49,13 +28,20 @@ int main(int argc, char** argv) {
                                             "pf | ps | fastslam | odometry "
                                             "(default: the INI's [slam] method, or pf)",
                                             false, "", "NAME", cmd);
-        TCLAP::ValueArg<std::string> config("", "config",
-                                            "INI file (default: the method's stock INI)",
-                                            false, "", "INI", cmd);
-        TCLAP::ValueArg<uint64_t> seed("", "seed", "random seed", false, 1, "N", cmd);
-        TCLAP::ValueArg<std::string> start("", "start",
-                                           "start pose X Y PHI (default: the rawlog's)",
-                                           false, "", "X Y PHI", cmd);
+        TCLAP::ValueArg<std::string> config(
+            "", "config",
+            "INI file, or a stock one by name (e.g. slam_ps); default: the method's "
+            "stock INI",
+            false, "", "INI", cmd);
+        TCLAP::MultiArg<std::string> sets(
+            "", "set",
+            "override an INI key, e.g. --set slam.robot_particles=200 (repeatable)",
+            false, "SECTION.KEY=VALUE", cmd);
+        rfir::common::CNumberArg<uint64_t> seed("", "seed", "random seed (default 1)",
+                                                false, 1, "N", cmd);
+        TCLAP::ValueArg<std::string> start(
+            "", "start", "start pose X Y PHI, or \"X Y PHI\" (default: the rawlog's)",
+            false, "", "X Y PHI", cmd);
         TCLAP::ValueArg<std::string> gtPath("", "gt-path", "ground-truth path (TUM)",
                                             false, "", "TUM", cmd);
         TCLAP::ValueArg<std::string> gtMap("", "gt-map", "ground-truth map", false, "",
@@ -66,26 +52,35 @@ int main(int argc, char** argv) {
             "output; beyond the seeds): path_smoothed.tum, map_smoothed.txt, "
             "path_map_smoothed.png, errors_smoothed.json",
             cmd, false);
-        const auto args = foldStart(argc, argv);
-        std::vector<const char*> av;
-        for (const auto& s : args) av.push_back(s.c_str());
-        // MRPT's TCLAP returns false after printing --help or --version.
-        if (!cmd.parse(int(av.size()), av.data())) return 0;
+        TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on stderr", cmd,
+                               false);
+        std::vector<std::string> args(argv, argv + argc);
+        try {
+            rfir::common::foldOptionValues(args, "--start", 3);
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "rfir-slam: error: " << e.what() << "\n";
+            return rfir::common::kUsageExitCode;
+        }
+        if (const auto code = rfir::common::parseCommandLine(cmd, args)) return *code;
 
         rfir::slamapp::TAppArgs a;
+        try {  // a bad --start is a usage error, reported before any work
+            if (start.isSet()) a.start = parseStart(start.getValue());
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "rfir-slam: error: " << e.what() << "\n";
+            return rfir::common::kUsageExitCode;
+        }
         a.rawlog = rawlog.getValue();
         a.outDir = outDir.getValue();
         if (method.isSet()) a.method = method.getValue();
-        if (config.isSet()) a.config = config.getValue();
+        if (config.isSet()) a.config = rfir::common::resolveConfigFile(config.getValue());
         if (gtPath.isSet()) a.gtPath = gtPath.getValue();
         if (gtMap.isSet()) a.gtMap = gtMap.getValue();
         a.seed = seed.getValue();
         a.smooth = smooth.getValue();
-        if (start.isSet()) a.start = parseStart(start.getValue());
+        a.sets = sets.getValue();
+        a.quiet = quiet.getValue();
         return rfir::slamapp::runSlamApp(a);
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "rfir-slam: " << e.error() << " (" << e.argId() << ")\n";
-        return 2;
     } catch (const std::exception& e) {
         std::cerr << "rfir-slam: error: " << e.what() << "\n";
         return 1;

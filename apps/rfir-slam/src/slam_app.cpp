@@ -4,6 +4,7 @@
 #include <rfir/slam/graph_smoother.h>
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/ini_override.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
@@ -14,10 +15,12 @@
 #include <rfir/eval/report.h>
 #include <rfir/slam/slam_engine.h>
 
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/filesystem.h>
 
 #include <cstdio>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -28,6 +31,29 @@ using rfir::common::TMapFile;
 using rfir::common::TPath2D;
 
 namespace {
+/** stderr, or a sink under --quiet (warnings still go to stderr). */
+std::ostream& logStream(const TAppArgs& a) {
+    static std::ostream sink(nullptr);
+    return a.quiet ? sink : std::cerr;
+}
+
+/** The INI with the --set edits written over it. */
+rfir::slam::TSlamConfig loadConfig(const std::string& ini, const TAppArgs& a) {
+    if (a.sets.empty()) return rfir::slam::loadSlamConfigFile(ini, a.method);
+    std::ifstream f(ini);
+    if (!mrpt::system::fileExists(ini) || !f)
+        throw std::invalid_argument("cannot read INI file '" + ini + "'");
+    std::stringstream text;
+    text << f.rdbuf();
+    mrpt::config::CConfigFileMemory mem(text.str());
+    rfir::common::applyIniOverrides(mem, a.sets);
+    try {
+        return rfir::slam::loadSlamConfig(mem, a.method);
+    } catch (const std::exception& e) {
+        throw std::invalid_argument(ini + " (with --set): " + e.what());
+    }
+}
+
 std::string withoutRawlogExt(const std::string& p) {
     const std::string ext = ".rawlog";
     if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
@@ -215,11 +241,11 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
                                                       const rfir::slam::TSlamRun& run) {
     rfir::slam::TGraphSmootherParams p;
     p.motion = cfg.motion;
-    std::cerr << "rfir-slam: smoothing " << run.path.size() << " poses offline\n";
+    logStream(a) << "rfir-slam: smoothing " << run.path.size() << " poses offline\n";
     const auto res = rfir::slam::smoothRun(data.inputs, start, run, p);
-    std::cerr << "rfir-slam: smoothed in " << res.iterations << " iterations ("
-              << res.reads << " reads; cost " << res.initialCost << " -> "
-              << res.finalCost << ")\n";
+    logStream(a) << "rfir-slam: smoothed in " << res.iterations << " iterations ("
+                 << res.reads << " reads; cost " << res.initialCost << " -> "
+                 << res.finalCost << ")\n";
     return writeAndScore(a, truth, res.run, "_smoothed", cfg.slam.method + " smoothed",
                          "<tag> <id> <x> <y> <sx> <sy>");
 }
@@ -237,13 +263,13 @@ int runSlamApp(const TAppArgs& args) {
     if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
     const std::string ini =
         a.config ? *a.config : stockConfigPath(a.method.value_or("pf"));
-    rfir::slam::TSlamConfig cfg = rfir::slam::loadSlamConfigFile(ini, a.method);
+    rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
     cfg.seed = a.seed;
     mrpt::random::getRandomGenerator().randomize(uint32_t(a.seed));
     findGroundTruth(a);
 
-    std::cerr << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "
-              << ini << ", seed " << a.seed << ")\n";
+    logStream(a) << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "
+                 << ini << ", seed " << a.seed << ")\n";
     TLoaded data = readInputs(a.rawlog);
     // Refused before the filter runs and anything is written.
     if (a.smooth)
@@ -256,7 +282,7 @@ int runSlamApp(const TAppArgs& args) {
     data.info.startPose = start;  // the dead-reckoning row starts there too
     auto engine = rfir::slam::makeEngine(cfg, data.header);
     const size_t n = data.inputs.size();
-    rfir::common::CProgress progress("rfir-slam", n);
+    rfir::common::CProgress progress("rfir-slam", n, a.quiet ? nullptr : &std::cerr);
     const auto run = rfir::slam::runEngine(*engine, start, data.inputs,
                                            [&progress](size_t i) { progress.update(i); });
     progress.finish();
@@ -282,9 +308,10 @@ int runSlamApp(const TAppArgs& args) {
         rows.push_back(*smoothed);
     }
     if (!rows.empty()) std::cout << rfir::eval::formatErrorTable(rows);
-    std::cerr << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()
-              << " landmarks, " << std::fixed << std::setprecision(2)
-              << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir << "\n";
+    logStream(a) << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()
+                 << " landmarks, " << std::fixed << std::setprecision(2)
+                 << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir
+                 << "\n";
     return 0;
 }
 

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rfir::slamapp {
 struct TAppArgs {
@@ -16,6 +17,10 @@ struct TAppArgs {
     std::optional<mrpt::poses::CPose2D> start;
     /** Also refine the run offline (rfir::slam::smoothRun): *_smoothed outputs. */
     bool smooth = false;
+    /** --set "section.key=value" edits over the INI, in order. */
+    std::vector<std::string> sets;
+    /** --quiet: no progress or summary on stderr. */
+    bool quiet = false;
 };
 
 /** The stock INI of a method: <exe_dir>/../share/rfir/config_ini/slam_<m>.ini

@@ -5,6 +5,8 @@
 #include "tables.h"
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/cli.h>
+#include <rfir/common/install_paths.h>
 #include <rfir/maps/CIREmitterMap.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -28,6 +30,22 @@ std::string slurp(const std::string& p) {
     return s.str();
 }
 
+/** --only: the experiments asked for (empty: all); an unknown name is refused. */
+std::set<std::string> onlyList(const std::string& list) {
+    static const std::set<std::string> known = {
+        "config", "rotation", "speed", "failed", "height", "assoc", "particles", "raw"};
+    std::set<std::string> want;
+    std::stringstream ss(list);
+    for (std::string w; std::getline(ss, w, ',');) {
+        if (!known.count(w))
+            throw std::invalid_argument("--only: unknown experiment '" + w +
+                                        "' (config, rotation, speed, failed, height, "
+                                        "assoc, particles, raw)");
+        want.insert(w);
+    }
+    return want;
+}
+
 std::string header(const TOptions& o, const std::string& only) {
     std::ostringstream md;
     md << "# IR positioning: thesis chapter 5 reproduced in simulation\n\n"
@@ -49,15 +67,20 @@ std::string header(const TOptions& o, const std::string& only) {
 int main(int argc, char** argv) {
     TCLAP::CmdLine cmd("Runs the IR experiments of thesis chapter 5 in simulation.", ' ',
                        "0.1");
-    TCLAP::ValueArg<std::string> cfgDir("", "config-dir", "folder of the INIs", false,
-                                        "config_ini", "DIR", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "output folder (results_ir.md, img/)",
-                                     false, "docs", "DIR", cmd);
-    TCLAP::ValueArg<std::string> work("", "work", "scratch folder (rawlogs)", false,
-                                      "/tmp/rfir-ir-experiments", "DIR", cmd);
-    TCLAP::ValueArg<int> seeds("", "seeds", "seeds per row", false, 5, "N", cmd);
-    TCLAP::ValueArg<int> sweep("", "sweep-seeds", "seeds per point of the M sweep", false,
-                               20, "N", cmd);
+    TCLAP::ValueArg<std::string> cfgDir(
+        "", "config-dir", "folder of the INIs (default: the stock INIs)", false,
+        rfir::common::stockConfigDir(), "DIR", cmd);
+    TCLAP::ValueArg<std::string> out("", "out-dir", "output folder (results_ir.md, img/)",
+                                     true, "", "DIR", cmd);
+    TCLAP::ValueArg<std::string> work(
+        "", "work-dir",
+        "scratch folder, kept as a cache of the rawlogs (default: OUT/work)", false, "",
+        "DIR", cmd);
+    rfir::common::CNumberArg<int> seeds("", "seeds", "seeds per row (default 5)", false,
+                                        5, "N", cmd, 1, 10000);
+    rfir::common::CNumberArg<int> sweep("", "sweep-seeds",
+                                        "seeds per point of the M sweep (default 20)",
+                                        false, 20, "N", cmd, 1, 10000);
     TCLAP::ValueArg<std::string> only(
         "", "only",
         "comma list of: config,rotation,speed,failed,height,assoc,particles,raw", false,
@@ -65,13 +88,21 @@ int main(int argc, char** argv) {
     TCLAP::ValueArg<std::string> notes("", "notes", "markdown appended at the end", false,
                                        "", "FILE", cmd);
     TCLAP::SwitchArg quick("", "quick", "2 seeds, fewer rows (a smoke test)", cmd);
+    TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr", cmd);
     try {
-        cmd.parse(argc, argv);
+        if (const auto code = rfir::common::parseCommandLine(
+                cmd, argc, argv, {{"--out", "--out-dir"}, {"--work", "--work-dir"}}))
+            return *code;
+        const std::set<std::string> want = onlyList(only.getValue());
+        if (notes.isSet() && !fs::is_regular_file(notes.getValue()))
+            throw std::invalid_argument("--notes: cannot read '" + notes.getValue() +
+                                        "'");
         rfir::obs::registerAllClasses();
         rfir::maps::registerIRClasses();
         TSession s;
         s.configDir = fs::absolute(cfgDir.getValue()).string();
-        s.workDir = work.getValue();
+        s.workDir = work.isSet() ? work.getValue() : out.getValue() + "/work";
+        s.verbose = !quiet.getValue();
         fs::create_directories(s.workDir);
         TOptions o;
         o.quick = quick.getValue();
@@ -79,9 +110,6 @@ int main(int argc, char** argv) {
         o.sweepSeeds = o.quick ? 4 : sweep.getValue();
         o.imgDir = out.getValue() + "/img";
         fs::create_directories(o.imgDir);
-        std::set<std::string> want;
-        std::stringstream ss(only.getValue());
-        for (std::string w; std::getline(ss, w, ',');) want.insert(w);
         auto on = [&](const char* k) { return want.empty() || want.count(k); };
         const auto t0 = std::chrono::steady_clock::now();
         std::string md = header(o, only.getValue());
@@ -99,8 +127,9 @@ int main(int argc, char** argv) {
         md += "\n---\nRun time: " + fmt(secs / 60, 1) + " min.\n";
         rfir::common::writeFileAtomically(out.getValue() + "/results_ir.md",
                                           [&](std::ostream& f) { f << md; });
-        std::cerr << "rfir-ir-experiments: wrote " << out.getValue() << "/results_ir.md ("
-                  << fmt(secs, 0) << " s)\n";
+        if (!quiet.getValue())
+            std::cerr << "rfir-ir-experiments: wrote " << out.getValue()
+                      << "/results_ir.md (" << fmt(secs, 0) << " s)\n";
         return 0;
     } catch (const TCLAP::ArgException& e) {
         std::cerr << "rfir-ir-experiments: error: " << e.error() << " (" << e.argId()

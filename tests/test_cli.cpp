@@ -1,0 +1,138 @@
+/* The command-line helpers every program uses: strict numbers, lists, the
+ * parse outcome (help / version / error), --start folding, stock INIs by name. */
+#include <rfir/common/cli.h>
+#include <rfir/common/install_paths.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace rfir::common;
+
+TEST(Cli, IntegersAreParsedStrictly) {
+    EXPECT_EQ(parseNumber<uint64_t>("42"), 42u);
+    EXPECT_EQ(parseNumber<uint64_t>("0"), 0u);
+    EXPECT_EQ(parseNumber<uint64_t>("18446744073709551615"), UINT64_MAX);
+    EXPECT_EQ(parseNumber<int>("-3"), -3);
+    for (const char* bad : {"", "abc", "-3", "1.5", "5e2", "500x", " 5", "5 ", "+5",
+                            "nan", "inf", "18446744073709551616", "0x10"})
+        EXPECT_FALSE(parseNumber<uint64_t>(bad)) << "'" << bad << "'";
+    for (const char* bad : {"2147483648", "1.0", "--1"})
+        EXPECT_FALSE(parseNumber<int>(bad)) << bad;
+}
+
+TEST(Cli, RealsMustBeFinite) {
+    EXPECT_DOUBLE_EQ(*parseNumber<double>("0.25"), 0.25);
+    EXPECT_DOUBLE_EQ(*parseNumber<double>("-1e-3"), -1e-3);
+    EXPECT_DOUBLE_EQ(*parseNumber<double>("5e2"), 500);
+    for (const char* bad :
+         {"", "nan", "NaN", "inf", "-inf", "infinity", "1e400", "1x", "1,5", " 1", "abc"})
+        EXPECT_FALSE(parseNumber<double>(bad)) << "'" << bad << "'";
+}
+
+TEST(Cli, RangesAndListsNameTheOption) {
+    EXPECT_EQ(parseNumberOrThrow<int>("--k", "5", 2, 9), 5);
+    try {
+        parseNumberOrThrow<int>("--k", "10", 2, 9);
+        FAIL() << "10 accepted in [2, 9]";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "--k: '10' is not a whole number in [2, 9]");
+    }
+    EXPECT_EQ(parseNumberList<size_t>("--m", "100,500", ',', 0, 1),
+              (std::vector<size_t>{100, 500}));
+    EXPECT_THROW(parseNumberList<size_t>("--m", "100,,500", ',', 0, 1),
+                 std::invalid_argument);
+    EXPECT_THROW(parseNumberList<size_t>("--m", "100,0", ',', 0, 1),
+                 std::invalid_argument);
+    EXPECT_EQ(parseNumberList<double>("--start", " 1  -2\t0.5 ", ' ', 3),
+              (std::vector<double>{1, -2, 0.5}));
+    EXPECT_THROW(parseNumberList<double>("--start", "1 2", ' ', 3),
+                 std::invalid_argument);
+    EXPECT_THROW(parseNumberList<double>("--start", "1 2 3 4", ' ', 3),
+                 std::invalid_argument);
+    EXPECT_THROW(parseNumberList<double>("--start", "", ' ', 3), std::invalid_argument);
+    EXPECT_THROW(parseNumberList<double>("--start", "1 2 nan", ' ', 3),
+                 std::invalid_argument);
+}
+
+namespace {
+struct TCmd {
+    TCLAP::CmdLine cmd{"test", ' ', "9.9"};
+    CNumberArg<uint64_t> seed{"", "seed", "seed", false, 7, "N", cmd};
+    CNumberArg<double> gain{"", "gain", "gain", false, 1.5, "G", cmd, 0, 10};
+    TCLAP::ValueArg<std::string> out{"", "out-dir", "folder", true, "", "DIR", cmd};
+};
+std::optional<int> parse(TCmd& c, std::vector<std::string> args) {
+    args.insert(args.begin(), "prog");
+    return parseCommandLine(c.cmd, args, {{"-o", "--out-dir"}});
+}
+}  // namespace
+
+TEST(Cli, ParseOutcomes) {
+    {
+        TCmd c;
+        EXPECT_EQ(parse(c, {"--out-dir", "x"}), std::nullopt);
+        EXPECT_EQ(c.seed.getValue(), 7u);  // the default
+        EXPECT_DOUBLE_EQ(c.gain.getValue(), 1.5);
+    }
+    {
+        TCmd c;
+        EXPECT_EQ(parse(c, {"--out-dir", "x", "--seed", "12", "--gain", "0.5"}),
+                  std::nullopt);
+        EXPECT_EQ(c.seed.getValue(), 12u);
+        EXPECT_DOUBLE_EQ(c.gain.getValue(), 0.5);
+    }
+    {
+        TCmd c;  // the deprecated spelling still works
+        EXPECT_EQ(parse(c, {"-o", "y"}), std::nullopt);
+        EXPECT_EQ(c.out.getValue(), "y");
+    }
+    for (const auto& args : std::vector<std::vector<std::string>>{
+             {"--help"}, {"--version"}, {"--out-dir", "x", "--help"}}) {
+        TCmd c;
+        testing::internal::CaptureStdout();
+        EXPECT_EQ(parse(c, args), 0) << args[0];
+        testing::internal::GetCapturedStdout();
+    }
+    for (const auto& args :
+         std::vector<std::vector<std::string>>{{},
+                                               {"--out-dir", "x", "--bogus"},
+                                               {"--out-dir", "x", "--seed", "-3"},
+                                               {"--out-dir", "x", "--seed", "abc"},
+                                               {"--out-dir", "x", "--seed", "1.5"},
+                                               {"--out-dir", "x", "--gain", "nan"},
+                                               {"--out-dir", "x", "--gain", "11"},
+                                               {"--out-dir", "x", "--seed"}}) {
+        TCmd c;
+        testing::internal::CaptureStderr();
+        testing::internal::CaptureStdout();
+        EXPECT_EQ(parse(c, args), kUsageExitCode) << (args.empty() ? "" : args.back());
+        const std::string err = testing::internal::GetCapturedStderr();
+        testing::internal::GetCapturedStdout();
+        if (args.size() == 4) {  // a bad value: the message names the option
+            EXPECT_NE(err.find(args[2]), std::string::npos) << err;
+        }
+    }
+}
+
+TEST(Cli, StartFoldsThreeTokensOrKeepsOneQuoted) {
+    std::vector<std::string> a = {"p", "--start", "1", "-2", "0.5", "--seed", "3"};
+    foldOptionValues(a, "--start", 3);
+    EXPECT_EQ(a, (std::vector<std::string>{"p", "--start", "1 -2 0.5", "--seed", "3"}));
+    std::vector<std::string> b = {"p", "--start", "1 -2 0.5", "--seed", "3"};
+    foldOptionValues(b, "--start", 3);
+    EXPECT_EQ(b, (std::vector<std::string>{"p", "--start", "1 -2 0.5", "--seed", "3"}));
+    std::vector<std::string> c = {"p", "--start", "1", "2"};
+    EXPECT_THROW(foldOptionValues(c, "--start", 3), std::invalid_argument);
+}
+
+TEST(Cli, StockIniByBareName) {
+    namespace fs = std::filesystem;
+    const fs::path stock = fs::path(stockConfigDir()) / "slam_ps.ini";
+    ASSERT_TRUE(fs::exists(stock)) << stock;
+    EXPECT_EQ(fs::path(resolveConfigFile("slam_ps.ini")), stock);
+    EXPECT_EQ(fs::path(resolveConfigFile("slam_ps")), stock);
+    // A path is a path; an unknown name is left for the loader to report.
+    EXPECT_EQ(resolveConfigFile("./slam_ps.ini"), "./slam_ps.ini");
+    EXPECT_EQ(resolveConfigFile("no_such_config"), "no_such_config");
+}

@@ -156,14 +156,17 @@ void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f, int r) {
             img.filledRectangle(x - 5, y - 5, x + 5, y + 5, kEmitter);
             if (f.showIds) text(img, x + 7, y - 14, e.id, TColor(150, 80, 0), kSmall);
         } else
-            fillDisc(img, x, y, std::max(1, r / 2), kGtTag);
+            // Dense floors: a paler dot, so the paths read over the carpet.
+            fillDisc(img, x, y, std::max(1, r / 2),
+                     r > 3 ? kGtTag : TColor(200, 160, 220));
     }
 }
 /** Every path, then headings and start / end markers (truth in black). */
 void drawPaths(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
+    // The truth underneath, wider: estimates close to it stay visible.
+    if (f.gtPath) polyline(img, ax, xy(*f.gtPath), kGtPath, 3);
     if (f.odomPath) polyline(img, ax, xy(*f.odomPath), kOdomPath, 2, true);
     for (const auto& p : f.extraPaths) polyline(img, ax, xy(p.path), p.color, p.width);
-    if (f.gtPath) polyline(img, ax, xy(*f.gtPath), kGtPath, 2);
     if (f.estPath) polyline(img, ax, xy(*f.estPath), kEstPath, 2);
     if (!f.showHeadings) return;
     const TColor ink(0, 0, 0);

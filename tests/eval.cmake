@@ -11,5 +11,5 @@ if(TARGET rfir_sim)
 endif()
 
 # The README's demo and its bar (scripts/demo_run.sh through the programs).
-rfir_add_test(test_demo SOURCES test_demo.cpp)
+rfir_add_test(test_demo SOURCES test_demo.cpp LIBS rfir_eval)
 add_dependencies(test_demo rfir-slam rfir-eval)

@@ -1,6 +1,12 @@
 // The README's demo (scripts/demo_run.sh) on its bundled loop dataset, seed
 // 1: the bar it is there to show. PF-SLAM and PS-SLAM at least 30 % below the
 // odometry's mean robot error, the smoothed run below both.
+#include <rfir/eval/scene3d.h>
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/serialization/CArchive.h>
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -55,4 +61,19 @@ TEST(DemoBar, SlamBeatsOdometryOnTheLoop) {
         EXPECT_NE(table.find(row), std::string::npos) << row << " not in\n" << table;
     EXPECT_GT(slurp(d / "demo_paths.png").size(), 10000u);
     EXPECT_GT(slurp(d / "demo_error_time.png").size(), 10000u);
+    // rfir-slam's own figures and 3D scene, one tag ellipse per mapped tag.
+    EXPECT_GT(slurp(d / "ps/error_time.png").size(), 10000u);
+    mrpt::opengl::COpenGLScene scene;
+    mrpt::io::CFileGZInputStream in(d / "ps/scene.3Dscene");
+    mrpt::serialization::archiveFrom(in) >> scene;
+    auto tags = std::dynamic_pointer_cast<mrpt::opengl::CSetOfObjects>(
+        scene.getByName(rfir::eval::scene_names::kEstTags));
+    ASSERT_TRUE(tags);
+    std::istringstream map(slurp(d / "ps/map.txt"));
+    size_t n = 0;
+    for (std::string line; std::getline(map, line);) n += line.rfind("tag ", 0) == 0;
+    EXPECT_EQ(tags->size(), n);
+    EXPECT_GT(n, 50u);
+    EXPECT_TRUE(scene.getByName(rfir::eval::scene_names::kReaders));
+    EXPECT_TRUE(scene.getByName(rfir::eval::scene_names::kGtPath));
 }

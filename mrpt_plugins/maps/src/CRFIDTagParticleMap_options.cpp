@@ -106,9 +106,8 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
                                          rbUseLandmarkCov ? 1 : 0) == 1;
     robotLikelihood = static_cast<TRobotLikelihood>(rfir::readIniEnum(
         c, s, "robot_likelihood", kRobotLikNames, static_cast<size_t>(robotLikelihood)));
-    robotLikelihoodK =
-        rfir::readIniPositiveInt(c, s, "robot_likelihood_k", robotLikelihoodK,
-                                 kMaxRobotLikelihoodK);
+    robotLikelihoodK = rfir::readIniPositiveInt(c, s, "robot_likelihood_k",
+                                                robotLikelihoodK, kMaxRobotLikelihoodK);
 }
 
 void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const {
@@ -132,12 +131,21 @@ CRFIDTagParticleMap::TMapDefinition::TMapDefinition() = default;
 
 void CRFIDTagParticleMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
+    const std::string creation = prefix + "_creationOpts";
+    if (source.sectionExists(creation)) {
+        // MRPT reads its generic map options from the same section.
+        rfir::checkIniKeys(source, creation,
+                           {"prior_map_file", "enableSaveAs3DObject",
+                            "enableObservationLikelihood", "enableObservationInsertion"});
+        priorMapFile = source.read_string(creation, "prior_map_file", "");
+    }
     insertionOpts.loadFromConfigFile(source, prefix + "_insertOpts");
     likelihoodOpts.loadFromConfigFile(source, prefix + "_likelihoodOpts");
 }
 
 void CRFIDTagParticleMap::TMapDefinition::dumpToTextStream_map_specific(
     std::ostream& out) const {
+    out << "prior_map_file      = " << priorMapFile << "\n";
     insertionOpts.dumpToTextStream(out);
     likelihoodOpts.dumpToTextStream(out);
 }
@@ -148,5 +156,6 @@ mrpt::maps::CMetricMap* CRFIDTagParticleMap::internal_CreateFromMapDefinition(
     auto* m = new CRFIDTagParticleMap();
     m->insertionOptions = def.insertionOpts;
     m->likelihoodOptions = def.likelihoodOpts;
+    if (!def.priorMapFile.empty()) m->loadPriorFromTextFile(def.priorMapFile);
     return m;
 }

@@ -157,3 +157,57 @@ TEST(EvalPlot, LinePlotRejectsMismatchedSeries) {
     p.series.push_back({"bad", {1, 2}, {1}, {}, true, true});
     EXPECT_THROW(renderLinePlot(p), std::runtime_error);
 }
+
+namespace {
+/** A tick mark below the plot area at column x (dark frame grey). */
+bool tickAt(const mrpt::img::CImage& im, const TPlotAxes& ax, double x) {
+    const TRGB c = pixel(im, int(std::lround(ax.px(x))), ax.bottom + 3);
+    return c.r < 100 && c.g < 100 && c.b < 100;
+}
+}  // namespace
+
+TEST(EvalPlot, LogSweepTickedAtItsValues) {
+    // The quick particle sweep: M = 100 and 300 on a log axis. Decade / 1-2-5
+    // ticks would give 100 and 200 and leave 300 unlabelled.
+    TLinePlot p;
+    p.logX = true;
+    p.series.push_back({"PF-SLAM", {100, 300}, {1, 2}, {}, true, true});
+    TPlotAxes ax;
+    const auto img = renderLinePlot(p, &ax);
+    EXPECT_TRUE(tickAt(img, ax, 100));
+    EXPECT_TRUE(tickAt(img, ax, 300));
+    EXPECT_FALSE(tickAt(img, ax, 200));
+    // A dense sweep keeps the decade ticks.
+    p.series[0].x = {100, 110, 120, 1000};
+    p.series[0].y = {1, 2, 3, 4};
+    const auto img2 = renderLinePlot(p, &ax);
+    EXPECT_TRUE(tickAt(img2, ax, 200));
+    EXPECT_TRUE(tickAt(img2, ax, 500));
+}
+
+TEST(EvalPlot, MapFigureMarksStartEndAndUncertainty) {
+    TMapFigure f;
+    f.gtPath =
+        TPath2D{{0, CPose2D(0, 0, 0)}, {1, CPose2D(2, 0, 0)}, {2, CPose2D(2, 1, 1.57)}};
+    f.estPath = TPath2D{{0, CPose2D(0, 0.2, 0)}, {2, CPose2D(2, 1.2, 1.57)}};
+    auto e = entry("t", 1, 0.5);
+    e.sx = 0.05, e.sy = 0.02;  // 2 sigma: 100 x 40 mm, well beyond the marker
+    f.estMap = {e};
+    TPlotAxes ax;
+    const auto img = renderMapFigure(f, &ax);
+    auto black = [](TRGB c) { return c.r < 40 && c.g < 40 && c.b < 40; };
+    // The truth's start square is hollow: black 5 px from its centre.
+    EXPECT_TRUE(near(img, ax.px(0) + 5, ax.py(0), 0, black));
+    EXPECT_TRUE(near(img, ax.px(2), ax.py(1), 1, black));  // end cross, centre
+    // The 2-sigma ellipse (dark green) crosses the x axis through the tag at
+    // 2 sx = 0.1 m, outside the 6 px circle.
+    const double s = ax.px(1) - ax.px(0);
+    ASSERT_GT(0.1 * s, 10);
+    auto ellipse = [](TRGB c) { return c.r < 30 && c.g > 60 && c.g < 110 && c.b > 40; };
+    EXPECT_TRUE(near(img, ax.px(1.1), ax.py(0.5), 1, ellipse));
+    EXPECT_FALSE(near(img, ax.px(1.2), ax.py(0.5), 1, ellipse));
+    // Without headings: no start / end markers.
+    f.showHeadings = false;
+    const auto img2 = renderMapFigure(f, &ax);
+    EXPECT_FALSE(near(img2, ax.px(0) + 5, ax.py(0), 0, black));
+}

@@ -49,9 +49,13 @@ TErrorStats statsOf(const std::vector<TPoseError>& errs) {
         s.max_dy = std::max(s.max_dy, ay);
         s.max_dtheta = std::max(s.max_dtheta, at);
         s.max_dist = std::max(s.max_dist, e.dist);
+        s.rmse_dist += e.dist * e.dist;
+        s.rmse_dtheta += e.dtheta * e.dtheta;
     }
     if (s.count) {
         const double n = double(s.count);
+        s.rmse_dist = std::sqrt(s.rmse_dist / n);
+        s.rmse_dtheta = std::sqrt(s.rmse_dtheta / n);
         s.mean_dx /= n;
         s.mean_dy /= n;
         s.mean_dtheta /= n;
@@ -74,6 +78,30 @@ std::vector<TErrorStats> segmentStats(const std::vector<TPoseError>& errs, doubl
     return out;
 }
 
+TPoseError poseError(double t, const mrpt::poses::CPose2D& e,
+                     const mrpt::poses::CPose2D& g) {
+    TPoseError pe;
+    pe.t = t;
+    pe.dx = e.x() - g.x();
+    pe.dy = e.y() - g.y();
+    pe.dtheta = wrapToPi(e.phi() - g.phi());
+    pe.dist = std::hypot(pe.dx, pe.dy);
+    return pe;
+}
+
+namespace {
+/** The evo-like figures of a run from its compared pose pairs. */
+void addTrajectoryMetrics(TRobotErrors& r) {
+    r.alignment = alignPositions(r.pairs);
+    std::vector<TPoseError> aligned;
+    for (const auto& p : r.pairs)
+        aligned.push_back(poseError(p.t, r.alignment.apply(p.est), p.gt));
+    r.aligned = statsOf(aligned);
+    r.rpePerMetre = relativePoseError(r.pairs, 1.0, RpeUnit::Metres);
+    r.rpePerSecond = relativePoseError(r.pairs, 1.0, RpeUnit::Seconds);
+}
+}  // namespace
+
 TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt,
                                 Association assoc) {
     const bool atTruth = assoc == Association::AtTruthTimes;
@@ -92,13 +120,8 @@ TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt,
         }
         const mrpt::poses::CPose2D& e = atTruth ? *q : p.pose;
         const mrpt::poses::CPose2D& g = atTruth ? p.pose : *q;
-        TPoseError pe;
-        pe.t = p.t;
-        pe.dx = e.x() - g.x();
-        pe.dy = e.y() - g.y();
-        pe.dtheta = wrapToPi(e.phi() - g.phi());
-        pe.dist = std::hypot(pe.dx, pe.dy);
-        r.perPose.push_back(pe);
+        r.perPose.push_back(poseError(p.t, e, g));
+        r.pairs.push_back({p.t, e, g});
     }
     if (r.perPose.empty())
         throw std::runtime_error(
@@ -108,6 +131,7 @@ TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt,
             std::to_string(gt.back().t) + "] s, estimate [" +
             std::to_string(est.front().t) + ", " + std::to_string(est.back().t) + "] s)");
     r.stats = statsOf(r.perPose);
+    addTrajectoryMetrics(r);
     return r;
 }
 

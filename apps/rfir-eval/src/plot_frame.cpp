@@ -111,6 +111,15 @@ void drawSwatch(CImage& img, int x, int y, const TLegendEntry& e) {
         case TLegendEntry::Square:
             img.filledRectangle(cx - 5, y - 5, cx + 5, y + 5, e.color);
             break;
+        case TLegendEntry::StartMark:
+            drawStartMark(img, cx, y, e.color);
+            break;
+        case TLegendEntry::EndMark:
+            drawEndMark(img, cx, y, e.color);
+            break;
+        case TLegendEntry::Arrow:
+            drawArrow(img, cx - 8, y, 0, e.color, 16);
+            break;
     }
 }
 }  // namespace

@@ -53,8 +53,19 @@ TTicks logTicks(double lo, double hi);
 void drawFrame(CImage& img, const TPlotAxes& ax, const TTicks& xt, const TTicks& yt,
                const std::string& xLabel, const std::string& yLabel);
 
+/** An arrow of `len` pixels from (x, y) along the world heading phi. */
+void drawArrow(CImage& img, double x, double y, double phi, TColor c, int len);
+/** Heading arrows along a path, one every `everyPx` pixels of its length. */
+void drawHeadings(CImage& img, const TPlotAxes& ax, const rfir::common::TPath2D& p,
+                  TColor c, double everyPx);
+/** Start (hollow square) and end (cross) of a path. */
+void drawStartEnd(CImage& img, const TPlotAxes& ax, const rfir::common::TPath2D& p,
+                  TColor c);
+void drawStartMark(CImage& img, int x, int y, TColor c);
+void drawEndMark(CImage& img, int x, int y, TColor c);
+
 struct TLegendEntry {
-    enum Style { Line, DashedLine, LineDot, Dot, Circle, Square };
+    enum Style { Line, DashedLine, LineDot, Dot, Circle, Square, StartMark, EndMark, Arrow };
     std::string label;
     TColor color;
     Style style = Line;

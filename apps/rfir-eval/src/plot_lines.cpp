@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <tuple>
@@ -46,6 +47,28 @@ std::pair<double, double> range(const TLinePlot& p, bool isX, std::optional<doub
     return {a, b};
 }
 
+/** A log x axis over a few swept values is ticked at those values (a sweep's
+ * 100 and 300 would otherwise show as 100 and 200). Empty when not so. */
+TTicks sweptTicks(const TLinePlot& p, double a, double b) {
+    std::vector<double> v;
+    for (const auto& s : p.series)
+        for (double x : s.x)
+            if (usable(x, true) && x >= a && x <= b) v.push_back(x);
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    TTicks t;
+    if (v.size() < 2 || v.size() > 8) return t;
+    for (size_t i = 1; i < v.size(); i++)
+        if (v[i] / v[i - 1] < 1.15) return t;  // labels would overlap
+    for (double x : v) {
+        char buf[32];
+        std::snprintf(buf, sizeof(buf), "%g", x);
+        t.values.push_back(x);
+        t.labels.push_back(buf);
+    }
+    return t;
+}
+
 TTicks ticksFor(double a, double b, bool log, int pixels) {
     if (log) {
         TTicks t = logTicks(a, b);
@@ -82,7 +105,8 @@ mrpt::img::CImage renderLinePlot(const TLinePlot& p, TPlotAxes* axesOut) {
     ax.left = widest + 22 + (p.yLabel.empty() ? 0 : kLarge.h + 10);
     if (ax.right - ax.left < 100 || ax.bottom - ax.top < 80)
         throw std::runtime_error("line plot: the image is too small");
-    const TTicks xt = ticksFor(ax.x0, ax.x1, p.logX, ax.right - ax.left);
+    TTicks xt = p.logX ? sweptTicks(p, ax.x0, ax.x1) : TTicks{};
+    if (xt.values.empty()) xt = ticksFor(ax.x0, ax.x1, p.logX, ax.right - ax.left);
     drawFrame(img, ax, xt, yt, p.xLabel, p.yLabel);
     for (size_t i = 0; i < p.series.size(); i++) {
         const auto& s = p.series[i];

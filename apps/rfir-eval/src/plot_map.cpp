@@ -15,8 +15,8 @@ using rfir::common::TMapEntry;
 
 namespace {
 const TColor kGtPath(0, 90, 200), kEstPath(220, 30, 30), kOdomPath(130, 130, 130),
-    kGtTag(128, 0, 160), kEstTag(0, 150, 0), kEllipse(120, 200, 120),
-    kEmitter(240, 140, 0), kLink(150, 150, 150);
+    kGtTag(128, 0, 160), kEstTag(0, 150, 0), kEllipse(0, 80, 60), kEmitter(240, 140, 0),
+    kLink(150, 150, 150);
 
 struct TBounds {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
@@ -66,13 +66,20 @@ std::vector<TLegendEntry> legendOf(const TMapFigure& f) {
     if (std::any_of(f.gtMap.begin(), f.gtMap.end(), notEmitter))
         l.push_back({"true " + entryNoun(f.gtMap), kGtTag, TLegendEntry::Dot});
     if (std::any_of(f.estMap.begin(), f.estMap.end(), notEmitter))
-        l.push_back({"estimated " + entryNoun(f.estMap), kEstTag, TLegendEntry::Circle});
+        l.push_back({"estimated " + entryNoun(f.estMap) +
+                         (f.estMapLabel.empty() ? "" : " (" + f.estMapLabel + ")"),
+                     kEstTag, TLegendEntry::Circle});
     if (f.showEllipses && std::any_of(f.estMap.begin(), f.estMap.end(),
                                       [](const TMapEntry& e) { return e.sx && e.sy; }))
         l.push_back({"2-sigma ellipse", kEllipse, TLegendEntry::Circle});
     if (std::any_of(f.gtMap.begin(), f.gtMap.end(), isEmitter) ||
         std::any_of(f.estMap.begin(), f.estMap.end(), isEmitter))
         l.push_back({"IR emitters", kEmitter, TLegendEntry::Square});
+    if (f.showHeadings && (f.gtPath || f.estPath || !f.extraPaths.empty())) {
+        l.push_back({"heading", TColor(0, 0, 0), TLegendEntry::Arrow});
+        l.push_back({"start", TColor(0, 0, 0), TLegendEntry::StartMark});
+        l.push_back({"end", TColor(0, 0, 0), TLegendEntry::EndMark});
+    }
     return l;
 }
 
@@ -101,8 +108,19 @@ bool inside(const TPlotAxes& ax, double x, double y) {
     return x >= ax.left && x <= ax.right && y >= ax.top && y <= ax.bottom;
 }
 
+/** Marker radius [px]: 6 px, less where the true tags are denser than about
+ * one per 20 px (a big floor), at least 2 px. */
+int markerRadius(const TPlotAxes& ax, const TMapFigure& f, const TBounds& b) {
+    const double s = (ax.right - ax.left) / (ax.x1 - ax.x0);
+    const size_t n = std::max(f.gtMap.size(), f.estMap.size());
+    if (n < 2) return 6;
+    const double area = std::max((b.x1 - b.x0) * (b.y1 - b.y0), 1e-6);
+    const double spacingPx = s * std::sqrt(area / double(n));
+    return std::clamp(int(std::lround(0.3 * spacingPx)), 2, 6);
+}
+
 /** Returns whether some ellipse was large enough to show outside its circle. */
-bool drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
+bool drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f, int r) {
     bool ellipses = false;
     const double s = (ax.right - ax.left) / (ax.x1 - ax.x0);
     std::map<std::pair<int, std::string>, const TMapEntry*> truth;
@@ -110,7 +128,15 @@ bool drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
     for (const auto& e : f.estMap) {
         const double x = ax.px(e.x), y = ax.py(e.y);
         if (!inside(ax, x, y) || e.kind == TMapEntry::Kind::Emitter) continue;
-        if (f.showEllipses && e.sx && e.sy && 2 * std::max(*e.sx, *e.sy) * s > 7) {
+        if (f.showErrorLinks)
+            if (auto it = truth.find({int(e.kind), e.id}); it != truth.end())
+                img.line(int(x), int(y), int(ax.px(it->second->x)),
+                         int(ax.py(it->second->y)), kLink, 1);
+        img.drawCircle(int(std::lround(x)), int(std::lround(y)), r, kEstTag,
+                       r > 3 ? 2 : 1);
+        if (f.showIds) text(img, int(x) + r + 2, int(y) - 14, e.id, kEstTag, kSmall);
+        // On top of the circle: a filter's 2 sigma is often smaller than it.
+        if (f.showEllipses && e.sx && e.sy && 2 * std::max(*e.sx, *e.sy) * s >= 1) {
             ellipses = true;
             mrpt::math::CMatrixFixed<double, 2, 2> cov;
             cov(0, 0) = std::pow(std::max(*e.sx * s, 0.5), 2);
@@ -118,17 +144,11 @@ bool drawEstimated(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
             cov(0, 1) = cov(1, 0) = 0;
             img.ellipseGaussian(cov, x, y, 2, kEllipse, 1, 36);
         }
-        if (f.showErrorLinks)
-            if (auto it = truth.find({int(e.kind), e.id}); it != truth.end())
-                img.line(int(x), int(y), int(ax.px(it->second->x)),
-                         int(ax.py(it->second->y)), kLink, 1);
-        img.drawCircle(int(std::lround(x)), int(std::lround(y)), 6, kEstTag, 2);
-        if (f.showIds) text(img, int(x) + 8, int(y) - 14, e.id, kEstTag, kSmall);
     }
     return ellipses;
 }
 
-void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
+void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f, int r) {
     for (const auto& e : f.gtMap) {
         const int x = int(std::lround(ax.px(e.x))), y = int(std::lround(ax.py(e.y)));
         if (!inside(ax, x, y)) continue;
@@ -136,8 +156,27 @@ void drawTruth(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
             img.filledRectangle(x - 5, y - 5, x + 5, y + 5, kEmitter);
             if (f.showIds) text(img, x + 7, y - 14, e.id, TColor(150, 80, 0), kSmall);
         } else
-            fillDisc(img, x, y, 3, kGtTag);
+            // Dense floors: a paler dot, so the paths read over the carpet.
+            fillDisc(img, x, y, std::max(1, r / 2),
+                     r > 3 ? kGtTag : TColor(200, 160, 220));
     }
+}
+/** Every path, then headings and start / end markers (truth in black). */
+void drawPaths(CImage& img, const TPlotAxes& ax, const TMapFigure& f) {
+    // The truth underneath, wider: estimates close to it stay visible.
+    if (f.gtPath) polyline(img, ax, xy(*f.gtPath), kGtPath, 3);
+    if (f.odomPath) polyline(img, ax, xy(*f.odomPath), kOdomPath, 2, true);
+    for (const auto& p : f.extraPaths) polyline(img, ax, xy(p.path), p.color, p.width);
+    if (f.estPath) polyline(img, ax, xy(*f.estPath), kEstPath, 2);
+    if (!f.showHeadings) return;
+    const TColor ink(0, 0, 0);
+    // Headings on the truth and the estimate only: on every path of a
+    // comparison they would bury the paths.
+    if (f.estPath) drawHeadings(img, ax, *f.estPath, kEstPath, 150);
+    if (f.gtPath) drawHeadings(img, ax, *f.gtPath, kGtPath, 150);
+    if (f.estPath) drawStartEnd(img, ax, *f.estPath, kEstPath);
+    for (const auto& p : f.extraPaths) drawStartEnd(img, ax, p.path, p.color);
+    if (f.gtPath) drawStartEnd(img, ax, *f.gtPath, ink);
 }
 }  // namespace
 
@@ -167,13 +206,13 @@ mrpt::img::CImage renderMapFigure(const TMapFigure& f, TPlotAxes* axesOut) {
     const double step = niceStep(60 / s);  // ticks at least 60 px apart
     drawFrame(img, ax, linearTicks(ax.x0, ax.x1, step), linearTicks(ax.y0, ax.y1, step),
               "x [m]", "y [m]");
-    drawTruth(img, ax, f);
-    if (f.odomPath) polyline(img, ax, xy(*f.odomPath), kOdomPath, 2, true);
-    for (const auto& p : f.extraPaths) polyline(img, ax, xy(p.path), p.color, p.width);
-    if (f.gtPath) polyline(img, ax, xy(*f.gtPath), kGtPath, 2);
-    if (f.estPath) polyline(img, ax, xy(*f.estPath), kEstPath, 2);
+    const int r = markerRadius(ax, f, b);
+    drawTruth(img, ax, f, r);
+    // Tags first, paths on top: on a big floor the markers would bury them.
+    const bool ellipses = drawEstimated(img, ax, f, r);
+    drawPaths(img, ax, f);
     auto shown = legend;
-    if (!drawEstimated(img, ax, f))  // ellipses hidden under their circles
+    if (!ellipses)  // ellipses hidden under their circles
         shown.erase(
             std::remove_if(shown.begin(), shown.end(),
                            [](const TLegendEntry& e) { return e.color == kEllipse; }),

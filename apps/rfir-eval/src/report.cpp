@@ -86,6 +86,28 @@ std::string robotTable(const std::vector<TEvalResult>& rows, bool showMax) {
     return out + renderTable(t);
 }
 
+/** evo's figures: RMSE, SE(2)-aligned absolute errors, relative errors. */
+std::string evoTable(const std::vector<TEvalResult>& rows) {
+    std::vector<std::vector<std::string>> t;
+    t.push_back({"method", "rmse dr", "rmse θ", "al. mean dr", "al. rmse dr",
+                 "al. max dr", "al. rmse θ", "RPE/m t", "RPE/m θ", "RPE/s t", "RPE/s θ"});
+    auto row = [&](const std::string& label, const TRobotErrors& e) {
+        t.push_back(
+            {label, fmt(1e3 * e.stats.rmse_dist, 1), fmt(e.stats.rmse_dtheta, 3),
+             fmt(1e3 * e.aligned.mean_dist, 1), fmt(1e3 * e.aligned.rmse_dist, 1),
+             fmt(1e3 * e.aligned.max_dist, 1), fmt(e.aligned.rmse_dtheta, 3),
+             fmt(1e3 * e.rpePerMetre.rmse_trans, 1), fmt(e.rpePerMetre.rmse_rot, 3),
+             fmt(1e3 * e.rpePerSecond.rmse_trans, 1), fmt(e.rpePerSecond.rmse_rot, 3)});
+    };
+    for (const auto& r : rows) {
+        if (r.robot) row(r.label, *r.robot);
+        if (r.odometry) row(r.label + " odometry", *r.odometry);
+    }
+    return "Robot, as evo reports it: RMSE; after SE(2) alignment (al.); relative "
+           "pose error RMSE over 1 m and 1 s (mm, rad)\n" +
+           renderTable(t);
+}
+
 /** Mean distance error per time window; rows as in robotTable, the header
  * from the first result with windows. */
 std::string segmentTable(const std::vector<TEvalResult>& rows) {
@@ -150,6 +172,7 @@ std::string formatErrorTable(const std::vector<TEvalResult>& rows,
     }
     std::string out;
     if (anyRobot) out += robotTable(rows, opts.showMax);
+    if (anyRobot && opts.showEvo) out += "\n" + evoTable(rows);
     const std::string segments = segmentTable(rows);
     if (!segments.empty()) out += "\n" + segments;
     if (anyRobot && anyMap) out += "\n";
@@ -180,6 +203,30 @@ std::string jsonNum(double v) {
     return b;
 }
 
+std::string alignedJson(const TAlignment& a, const TErrorStats& s) {
+    std::ostringstream o;
+    o << "{\"theta\":" << jsonNum(a.theta) << ",\"tx\":" << jsonNum(a.tx)
+      << ",\"ty\":" << jsonNum(a.ty) << ",\"mean_dist\":" << jsonNum(s.mean_dist)
+      << ",\"rmse_dist\":" << jsonNum(s.rmse_dist)
+      << ",\"max_dist\":" << jsonNum(s.max_dist)
+      << ",\"mean_dtheta\":" << jsonNum(s.mean_dtheta)
+      << ",\"rmse_dtheta\":" << jsonNum(s.rmse_dtheta)
+      << ",\"max_dtheta\":" << jsonNum(s.max_dtheta) << "}";
+    return o.str();
+}
+
+std::string rpeJson(const TRpeStats& r) {
+    std::ostringstream o;
+    o << "{\"delta\":" << jsonNum(r.delta) << ",\"pairs\":" << r.pairs
+      << ",\"mean_trans\":" << jsonNum(r.mean_trans)
+      << ",\"rmse_trans\":" << jsonNum(r.rmse_trans)
+      << ",\"max_trans\":" << jsonNum(r.max_trans)
+      << ",\"mean_rot\":" << jsonNum(r.mean_rot)
+      << ",\"rmse_rot\":" << jsonNum(r.rmse_rot) << ",\"max_rot\":" << jsonNum(r.max_rot)
+      << "}";
+    return o.str();
+}
+
 std::string robotJson(const TRobotErrors& e) {
     const auto& s = e.stats;
     std::ostringstream o;
@@ -189,7 +236,12 @@ std::string robotJson(const TRobotErrors& e) {
       << ",\"mean_dist\":" << jsonNum(s.mean_dist) << ",\"max_dx\":" << jsonNum(s.max_dx)
       << ",\"max_dy\":" << jsonNum(s.max_dy)
       << ",\"max_dtheta\":" << jsonNum(s.max_dtheta)
-      << ",\"max_dist\":" << jsonNum(s.max_dist) << "}";
+      << ",\"max_dist\":" << jsonNum(s.max_dist)
+      << ",\"rmse_dist\":" << jsonNum(s.rmse_dist)
+      << ",\"rmse_dtheta\":" << jsonNum(s.rmse_dtheta)
+      << ",\"aligned\":" << alignedJson(e.alignment, e.aligned)
+      << ",\"rpe_per_m\":" << rpeJson(e.rpePerMetre)
+      << ",\"rpe_per_s\":" << rpeJson(e.rpePerSecond) << "}";
     return o.str();
 }
 
@@ -226,7 +278,7 @@ std::string mapJson(const TMapErrors& m) {
       << ",\"mean_dy\":" << jsonNum(s.mean_dy)
       << ",\"mean_dist\":" << jsonNum(s.mean_dist) << ",\"max_dx\":" << jsonNum(s.max_dx)
       << ",\"max_dy\":" << jsonNum(s.max_dy) << ",\"max_dist\":" << jsonNum(s.max_dist)
-      << "}";
+      << ",\"rmse_dist\":" << jsonNum(s.rmse_dist) << "}";
     o << ",\"" << p << "_mapped\":" << m.mapped << ",\"" << p << "_total\":" << m.total
       << ",\"" << p << "_unknown_ids\":" << m.unknownIds.size() << ",\"" << p
       << "_passed_over\":" << opt(m.passedOver) << ",\"" << p

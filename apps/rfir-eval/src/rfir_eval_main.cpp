@@ -2,6 +2,7 @@
  * the seeds' table layout (mm, rad) and as one JSON line; optional PNG figure. */
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>
+#include <rfir/eval/compare.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
@@ -21,10 +22,18 @@ struct TArgs {
     bool jsonOnly = false, noOdometry = false, ids = false, atGtTimes = false,
          quiet = false;
     int segments = 0;
+    std::vector<TRunSpec> runs;  //!< --run: several runs side by side
 };
 
 /** Option combinations TCLAP cannot express. */
 void validate(const TArgs& a) {
+    if (!a.runs.empty() && (!a.path.empty() || !a.map.empty() || a.segments > 0))
+        throw std::invalid_argument(
+            "--run compares whole runs: give each path and map in its --run, "
+            "without --path, --map or --segments");
+    if (!a.runs.empty() && a.gtPath.empty())
+        throw std::invalid_argument("--run needs --gt-path (the ground-truth path)");
+    if (!a.runs.empty()) return;
     if (!a.path.empty() && a.gtPath.empty())
         throw std::invalid_argument("--path needs --gt-path (the ground-truth path)");
     if (!a.errorPlot.empty() && a.path.empty())
@@ -108,6 +117,12 @@ TArgs parse(int argc, char** argv) {
     TCLAP::SwitchArg jsonOnly("", "json-only", "print only the JSON line", cmd);
     TCLAP::SwitchArg quiet(
         "q", "quiet", "print nothing on stdout (write only the files asked for)", cmd);
+    TCLAP::MultiArg<std::string> runs(
+        "", "run",
+        "a run to compare with the others (repeat it): its label, path and "
+        "optional map; one table, one JSON line {\"runs\": [...]}, and --plot "
+        "draws every path",
+        false, "LABEL=EST.tum[,MAP]", cmd);
     parseOrExit(cmd, argc, argv);
     TArgs a;
     a.path = path.getValue(), a.gtPath = gtPath.getValue(), a.map = map.getValue();
@@ -120,19 +135,16 @@ TArgs parse(int argc, char** argv) {
     a.errorPlot = errorPlot.getValue();
     a.segments = segments.getValue();
     a.quiet = quiet.getValue();
+    for (const auto& r : runs.getValue()) a.runs.push_back(parseRunSpec(r));
     validate(a);
     return a;
 }
 
 /** Passed-over / in-view landmarks, when the sensor geometry is known. */
-void addPassedOver(TMapErrors& m, const rfir::common::TMapFile& est,
-                   const rfir::common::TMapFile& gt, const rfir::common::TPath2D& gtPath,
-                   const TRawlogInfo& info) {
-    if (m.kind == TMapEntry::Kind::Tag && !info.readers.empty())
-        setPassedOver(m, tagsPassedOver(gt, gtPath, info.readers), est);
-    else if (m.kind == TMapEntry::Kind::Landmark && info.rbSensor)
-        setPassedOver(m, landmarksInView(gt, gtPath, *info.rbSensor), est);
-    else
+void addPassedOverOrWarn(TMapErrors& m, const rfir::common::TMapFile& est,
+                         const rfir::common::TMapFile& gt,
+                         const rfir::common::TPath2D& gtPath, const TRawlogInfo& info) {
+    if (!addPassedOver(m, est, gt, gtPath, info))
         std::cerr << "warning: the rawlog declares no "
                   << (m.kind == TMapEntry::Kind::Tag ? "RFID reader"
                                                      : "range-bearing sensor")
@@ -149,20 +161,26 @@ void addSegments(TEvalResult& r, const rfir::common::TPath2D& gt, size_t n) {
     if (r.odometry) r.odometrySegments = segmentStats(r.odometry->perPose, t0, t1, n);
 }
 
-void writeErrorPlot(const std::string& png, const TEvalResult& r,
-                    const std::string& title) {
-    if (!r.robot) throw std::invalid_argument("--error-plot needs --path and --gt-path");
-    TLinePlot p;
-    p.title = title + ": robot position error";
-    p.xLabel = "time [s]";
-    p.yLabel = "dr [mm]";
-    p.series.push_back(errorVsTime(r.label, r.robot->perPose));
-    p.series.back().color = mrpt::img::TColor(220, 30, 30);
-    if (r.odometry) {
-        p.series.push_back(errorVsTime("odometry", r.odometry->perPose));
-        p.series.back().color = mrpt::img::TColor(130, 130, 130);
-    }
-    plotLines(png, p);
+/** Several runs: one table, one JSON line, one figure. */
+int runCompare(const TArgs& a, TMapFigure& fig) {
+    TCompareInput in;
+    in.gt = rfir::common::loadTUM(a.gtPath);
+    checkPath(in.gt, a.gtPath);
+    if (!a.gtMap.empty()) in.gtMap = rfir::common::loadMapFile(a.gtMap);
+    if (!a.rawlog.empty()) in.rawlog = readRawlogInfo(a.rawlog);
+    in.deadReckoningRow = !a.noOdometry;
+    in.assoc = a.atGtTimes ? Association::AtTruthTimes : Association::AtEstimateTimes;
+    const auto rows = compareRuns(a.runs, in, fig);
+    const std::string json = toJsonRuns(rows);
+    if (!a.plot.empty()) plotMapFigure(a.plot, fig);
+    if (!a.errorPlot.empty()) plotErrorsOverTime(a.errorPlot, rows, fig.title);
+    if (!a.jsonFile.empty())
+        rfir::common::writeFileAtomically(a.jsonFile,
+                                          [&](std::ostream& o) { o << json << "\n"; });
+    if (a.quiet) return 0;
+    if (!a.jsonOnly) std::cout << formatErrorTable(rows) << "\n";
+    std::cout << json << std::endl;
+    return 0;
 }
 
 int run(const TArgs& a) {
@@ -171,6 +189,10 @@ int run(const TArgs& a) {
     TMapFigure fig;
     fig.title = a.title.empty() ? a.label : a.title;
     fig.showIds = a.ids;
+    if (!a.runs.empty()) {
+        if (a.title.empty()) fig.title = "runs compared";
+        return runCompare(a, fig);
+    }
     rfir::common::TPath2D gt;
     const auto assoc =
         a.atGtTimes ? Association::AtTruthTimes : Association::AtEstimateTimes;
@@ -204,12 +226,13 @@ int run(const TArgs& a) {
         if (!a.kind.empty())
             k = a.kind == "tag" ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark;
         r.map = computeMapErrors(fig.estMap, fig.gtMap, k);
-        if (info && !gt.empty()) addPassedOver(*r.map, fig.estMap, fig.gtMap, gt, *info);
+        if (info && !gt.empty())
+            addPassedOverOrWarn(*r.map, fig.estMap, fig.gtMap, gt, *info);
     }
     // Files first: a failure (e.g. a missing folder) then prints no results.
     const std::string json = toJson(r);
     if (!a.plot.empty()) plotMapFigure(a.plot, fig);
-    if (!a.errorPlot.empty()) writeErrorPlot(a.errorPlot, r, fig.title);
+    if (!a.errorPlot.empty()) plotErrorsOverTime(a.errorPlot, {r}, fig.title);
     if (!a.jsonFile.empty())
         rfir::common::writeFileAtomically(a.jsonFile,
                                           [&](std::ostream& o) { o << json << "\n"; });

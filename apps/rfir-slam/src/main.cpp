@@ -17,8 +17,8 @@ int main(int argc, char** argv) {
     try {
         TCLAP::CmdLine cmd(
             "rfir-slam: PF-SLAM, PS-SLAM or FastSLAM on a project rawlog. Writes "
-            "path.tum, map.txt, settings.ini, stats.json, path_map.png (and "
-            "errors.json with ground truth) into --out-dir.",
+            "path.tum, map.txt, settings.ini, stats.json, path_map.png, scene.3Dscene "
+            "(and errors.json, error_time.png with ground truth) into --out-dir.",
             ' ', "0.1");
         TCLAP::ValueArg<std::string> rawlog("", "rawlog", "input rawlog", true, "",
                                             "FILE", cmd);

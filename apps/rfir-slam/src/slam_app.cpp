@@ -10,9 +10,11 @@
 #include <rfir/common/rawlog_io.h>
 #include <rfir/common/slam_run.h>
 #include <rfir/common/trajectory_io.h>
+#include <rfir/eval/compare.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
+#include <rfir/eval/scene3d.h>
 #include <rfir/slam/slam_engine.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
@@ -131,6 +133,8 @@ struct TTruth {
 
 TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
     TTruth t;
+    t.readers = info.readers;  // also drawn in the 3D scene, truth or not
+    t.rbSensor = info.rbSensor;
     if (!a.gtPath) {
         if (a.gtMap)
             std::cerr
@@ -145,8 +149,6 @@ TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
         t.odometryErrors = rfir::eval::computeRobotErrors(*t.odometry, *t.path);
     }
     if (a.gtMap) t.map = rfir::common::loadMapFile(*a.gtMap);
-    t.readers = info.readers;
-    t.rbSensor = info.rbSensor;
     return t;
 }
 
@@ -228,7 +230,12 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(
     fig.estMap = map;
     auto r = evaluate(truth, label, path, map, fig);
     rfir::eval::plotMapFigure(a.outDir + "/path_map" + sfx + ".png", fig);
-    if (r) writeErrors(a.outDir + "/errors" + sfx + ".json", *r);
+    rfir::eval::saveScene3D(a.outDir + "/scene" + sfx + ".3Dscene", fig, truth.readers);
+    if (r) {
+        writeErrors(a.outDir + "/errors" + sfx + ".json", *r);
+        rfir::eval::plotErrorsOverTime(a.outDir + "/error_time" + sfx + ".png", {*r},
+                                       fig.title);
+    }
     return r;
 }
 

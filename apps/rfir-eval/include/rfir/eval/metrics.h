@@ -7,6 +7,7 @@
 #include <rfir/common/map_io.h>
 #include <rfir/common/rawlog_io.h>
 #include <rfir/common/trajectory_io.h>
+#include <rfir/eval/trajectory_metrics.h>
 #include <rfir/obs/CObservationLogHeader.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
 
@@ -23,6 +24,8 @@ struct TErrorStats {
     size_t count = 0;  //!< number of evaluated items (poses or landmarks)
     double mean_dx = 0, mean_dy = 0, mean_dtheta = 0, mean_dist = 0;
     double max_dx = 0, max_dy = 0, max_dtheta = 0, max_dist = 0;
+    /** Root mean square of dist and of dtheta (evo's APE "rmse"). */
+    double rmse_dist = 0, rmse_dtheta = 0;
 };
 
 /** Error of one estimated pose against the ground truth at the same time. */
@@ -38,6 +41,15 @@ struct TRobotErrors {
     std::vector<TPoseError> perPose;  //!< in the estimated path's order
     /** Estimated poses outside the ground truth's time span (not evaluated). */
     size_t skipped = 0;
+    /** The compared poses, in perPose's order. */
+    std::vector<TPosePair> pairs;
+    /** SE(2) alignment of the estimate onto the truth (alignPositions, no
+     * scale) and the errors after it (evo_ape --align). */
+    TAlignment alignment;
+    TErrorStats aligned;
+    /** Relative pose error per metre travelled and per second (evo_rpe
+     * --delta 1 --delta_unit m / s). */
+    TRpeStats rpePerMetre, rpePerSecond;
 };
 
 /** Error of one mapped landmark against its true position. */
@@ -98,6 +110,10 @@ TRobotErrors computeRobotErrors(const rfir::common::TPath2D& est,
 
 /** Statistics of a set of per-pose errors (e.g. a time window of perPose). */
 TErrorStats statsOf(const std::vector<TPoseError>& errs);
+
+/** Error of an estimated pose against a true one (estimate minus truth). */
+TPoseError poseError(double t, const mrpt::poses::CPose2D& est,
+                     const mrpt::poses::CPose2D& gt);
 
 /** Statistics per time window: [t0, t1] cut into n equal windows (the last
  * one closed); an error at time t goes to window floor(n (t - t0) / (t1 -

@@ -44,8 +44,12 @@ struct TMapFigure {
     std::vector<TPlotPath> extraPaths;
     std::string gtPathLabel = "ground truth", estPathLabel = "estimate",
                 odomPathLabel = "odometry";
+    /** Whose map estMap is, in the legend (figures with several paths). */
+    std::string estMapLabel;
     bool showEllipses = true;  //!< 2-sigma ellipses of estimated entries
     bool showIds = false;      //!< write the IDs of estimated entries
+    /** Heading arrows along the paths and start / end markers. */
+    bool showHeadings = true;
     /** Link each estimated landmark to its true position (error vectors). */
     bool showErrorLinks = false;
     int width = 1000, height = 900;  //!< whole image, pixels (at most, see fitToData)

@@ -1,0 +1,56 @@
+/* rfir: several runs on one data set scored side by side (rfir-eval --run):
+ * one table, one JSON line, one figure with every path and the truth. */
+#pragma once
+
+#include <rfir/eval/metrics.h>
+#include <rfir/eval/plot.h>
+#include <rfir/eval/report.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rfir::eval {
+/** One run to compare: `LABEL=PATH.tum[,MAP]`. */
+struct TRunSpec {
+    std::string label, path, map;
+};
+
+/** Parses `LABEL=PATH[,MAP]`; throws std::invalid_argument naming the text. */
+TRunSpec parseRunSpec(const std::string& s);
+
+/** Fills m.passedOver from the rawlog's sensor geometry; false when the rawlog
+ * declares no sensor for m's kind (no count). */
+bool addPassedOver(TMapErrors& m, const rfir::common::TMapFile& est,
+                   const rfir::common::TMapFile& gt, const rfir::common::TPath2D& gtPath,
+                   const TRawlogInfo& info);
+
+struct TCompareInput {
+    rfir::common::TPath2D gt;
+    std::optional<rfir::common::TMapFile> gtMap;
+    std::optional<TRawlogInfo> rawlog;  //!< dead-reckoning row, passed-over counts
+    bool deadReckoningRow = true;
+    Association assoc = Association::AtEstimateTimes;
+};
+
+/** Scores every run (files read here; errors name the file) and, first, the
+ * dead reckoning as a row "odometry" when the rawlog has odometry. Adds the
+ * truth, the odometry and every run's path to `fig` (runColor), and
+ * the map of the last run that has one. */
+std::vector<TEvalResult> compareRuns(const std::vector<TRunSpec>& runs,
+                                     const TCompareInput& in, TMapFigure& fig);
+
+/** The robot's position error over time of every row (and of each row's
+ * `odometry`, grey), as a PNG: rfir-eval --error-plot, rfir-slam's
+ * error_time.png. Rows named "odometry" are grey too; the others take
+ * runColor() in order, as compareRuns gives their paths. */
+void plotErrorsOverTime(const std::string& png, const std::vector<TEvalResult>& rows,
+                        const std::string& title);
+
+/** Colour of the i-th compared run's path and error curve. */
+mrpt::img::TColor runColor(size_t i);
+
+/** {"runs":[toJson(row), ...]} on one line. */
+std::string toJsonRuns(const std::vector<TEvalResult>& rows);
+
+}  // namespace rfir::eval

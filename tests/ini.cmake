@@ -5,3 +5,6 @@ if(TARGET rfir_sim AND TARGET rfir_localize_core)
     SOURCES test_ini_reference.cpp ini_keys.cpp
     LIBS rfir_slam rfir_sim rfir_localize_core mrpt::io)
 endif()
+rfir_add_test(test_output_set
+  SOURCES test_output_set.cpp
+  LIBS rfir_appcommon)

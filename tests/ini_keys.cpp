@@ -23,7 +23,8 @@ std::vector<TStockIni> stockInis() {
     for (const auto& e :
          fs::directory_iterator(std::string(RFIR_SOURCE_DIR) + "/config_ini")) {
         const std::string n = e.path().filename().string();
-        if (e.path().extension() != ".ini") continue;
+        // mrpt_*.ini are MRPT programs' INIs (test_mrpt_apps runs them).
+        if (e.path().extension() != ".ini" || n.rfind("mrpt_", 0) == 0) continue;
         const auto kind = n.rfind("slam_", 0) == 0 ? TStockIni::Kind::Slam
                           : n == "ir_localize.ini" ? TStockIni::Kind::Localize
                                                    : TStockIni::Kind::Sim;

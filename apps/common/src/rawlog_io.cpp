@@ -1,10 +1,12 @@
 #include <rfir/common/rawlog_io.h>
 
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRFID.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -60,12 +62,23 @@ CRawlogWriter::CRawlogWriter(const std::string& path,
     if (!out_->open(tmp_))
         throw std::runtime_error("cannot open '" + path + "' for writing");
     auto ar = mrpt::serialization::archiveFrom(*out_);
+    // A zero movement, not an empty collection: rbpf-slam asserts a movement
+    // in every action and RawLogViewer's odometry map needs one per step.
     CActionCollection acts;
+    acts.insert(zeroMovement(hdr.timestamp));
     CSensoryFrame sf;
     auto h = std::make_shared<rfir::obs::CObservationLogHeader>(hdr);
     if (h->sensorLabel.empty()) h->sensorLabel = "HEADER";
     sf.insert(h);
     ar << acts << sf;
+}
+
+CActionRobotMovement2D CRawlogWriter::zeroMovement(mrpt::Clock::time_point ts) const
+{
+    CActionRobotMovement2D mv;
+    mv.timestamp = ts;
+    mv.computeFromOdometry(mrpt::poses::CPose2D(), motion_);
+    return mv;
 }
 
 CRawlogWriter::~CRawlogWriter()
@@ -84,6 +97,9 @@ void CRawlogWriter::writeStep(double t, const std::optional<mrpt::poses::CPose2D
     const auto ts = mrpt::Clock::fromDouble(t);
     CActionCollection acts;
     CSensoryFrame sf;
+    // Without odometry the robot is taken as not moved: a zero movement,
+    // which the reader tells from a real one by the missing odometry record.
+    if (!odom) acts.insert(zeroMovement(ts));
     if (odom)
     {
         CActionRobotMovement2D mv;
@@ -134,20 +150,38 @@ CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
     }
     if (!opened) throw std::runtime_error(path + ": cannot open rawlog");
     auto a = readObject();
-    auto s = readObject();
-    auto acts = std::dynamic_pointer_cast<CActionCollection>(a);
-    auto sf = std::dynamic_pointer_cast<CSensoryFrame>(s);
-    if (!acts || !sf)
-        throw std::runtime_error(path + ": not a rawlog in action/sensory-frame layout "
-                                        "(see docs/rawlog-layout.md)");
-    if (auto h = sf->getObservationByClass<rfir::obs::CObservationLogHeader>())
-        header_ = h;
+    if (auto o = std::dynamic_pointer_cast<CObservation>(a))
+    {
+        // MRPT's observation-only layout: a flat sequence of observations.
+        obsOnly_ = true;
+        if (auto h = std::dynamic_pointer_cast<rfir::obs::CObservationLogHeader>(o))
+            header_ = h;
+        else
+            pendingObs_ = o;
+    }
     else
     {
+        auto s = readObject();
+        auto acts = std::dynamic_pointer_cast<CActionCollection>(a);
+        auto sf = std::dynamic_pointer_cast<CSensoryFrame>(s);
+        if (!acts || !sf)
+            throw std::runtime_error(path +
+                                     ": neither a rawlog in action/sensory-frame layout "
+                                     "nor an observation-only one (see "
+                                     "docs/rawlog-layout.md)");
+        if (auto h = sf->getObservationByClass<rfir::obs::CObservationLogHeader>())
+            header_ = h;
+        else
+            pending_ = std::make_pair(acts, sf);
+    }
+    if (!header_)
+    {
+        hasHeader_ = false;
         std::cerr << "warning: " << path
-                  << ": no rfir log header; reader geometry comes from the observations\n";
+                  << ": no rfir log header (a rawlog cut by rawlog-edit, or not written "
+                     "by rfir): no start pose; RFID reader geometry comes from the "
+                     "observations\n";
         header_ = std::make_shared<rfir::obs::CObservationLogHeader>();
-        pending_ = std::make_pair(acts, sf);
     }
 }
 
@@ -172,26 +206,119 @@ mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject()
     }
 }
 
-bool CRawlogReader::next(TRawlogStep& st)
+bool CRawlogReader::nextPair(CActionCollection::Ptr& acts, CSensoryFrame::Ptr& sf)
 {
-    CActionCollection::Ptr acts;
-    CSensoryFrame::Ptr sf;
     if (pending_)
     {
         std::tie(acts, sf) = *pending_;
         pending_.reset();
+        return true;
     }
-    else
+    auto a = readObject();
+    if (!a) return false;
+    auto s = readObject();
+    acts = std::dynamic_pointer_cast<CActionCollection>(a);
+    sf = std::dynamic_pointer_cast<CSensoryFrame>(s);
+    if (!acts || !sf)
+        throw std::runtime_error(path_ + ": entry " + std::to_string(entry_) +
+                                 ": expected an action collection / sensory frame pair");
+    return true;
+}
+
+bool CRawlogReader::nextFlatInstant(CSensoryFrame::Ptr& sf)
+{
+    // One instant = the consecutive observations with the same timestamp.
+    sf = std::make_shared<CSensoryFrame>();
+    for (;;)
     {
-        auto a = readObject();
-        if (!a) return false;
-        auto s = readObject();
-        acts = std::dynamic_pointer_cast<CActionCollection>(a);
-        sf = std::dynamic_pointer_cast<CSensoryFrame>(s);
-        if (!acts || !sf)
-            throw std::runtime_error(path_ + ": entry " + std::to_string(entry_) +
-                                     ": expected an action collection / sensory frame pair");
+        CObservation::Ptr o = pendingObs_;
+        pendingObs_.reset();
+        if (!o)
+        {
+            auto x = readObject();
+            if (!x) break;
+            o = std::dynamic_pointer_cast<CObservation>(x);
+            if (!o)
+                throw std::runtime_error(
+                    path_ + ": entry " + std::to_string(entry_) + ": a " +
+                    x->GetRuntimeClass()->className +
+                    " in an observation-only rawlog (layouts cannot be mixed)");
+        }
+        if (sf->size() > 0 && o->timestamp != (*sf->begin())->timestamp)
+        {
+            pendingObs_ = o;
+            break;
+        }
+        sf->insert(o);
     }
+    return sf->size() > 0;
+}
+
+namespace
+{
+/** Reader ID of an MRPT CObservationRFID antenna (docs/rawlog-layout.md). */
+std::string mrptReaderId(const CObservationRFID& o, const std::string& port)
+{
+    return port.empty() ? o.sensorLabel : o.sensorLabel + "." + port;
+}
+}  // namespace
+
+rfir::obs::TRFIDReader CRawlogReader::readerOf(const CObservationRFID& o,
+                                               const std::string& id)
+{
+    for (const auto& r : header_->readers)
+        if (r.id == id) return r;
+    rfir::obs::TRFIDReader r;
+    r.id = id;
+    r.x = o.sensorPoseOnRobot.x();
+    r.y = o.sensorPoseOnRobot.y();
+    if (warnedReaders_.insert(id).second)
+        std::cerr << "warning: " << path_ << ": RFID reader '" << id
+                  << "' is not in the rfir log header: its position is the "
+                     "observation's sensorPoseOnRobot ("
+                  << r.x << ", " << r.y << "), its detection area assumed " << 2 * r.halfX
+                  << " x " << 2 * r.halfY << " m\n";
+    return r;
+}
+
+void CRawlogReader::addMrptRFID(TRawlogStep& st, const CObservationRFID& o)
+{
+    // Copy-on-write: st.rfid may be an observation of the frame itself.
+    auto r = st.rfid ? std::make_shared<rfir::obs::CObservationRFIDReaders>(*st.rfid)
+                     : rfir::obs::CObservationRFIDReaders::Create();
+    if (!st.rfid)
+    {
+        r->timestamp = o.timestamp;
+        r->sensorLabel = "RFID";
+    }
+    auto reading = [&](const std::string& id) -> auto& {
+        for (auto& x : r->readings)
+            if (x.reader.id == id) return x;
+        r->readings.push_back({readerOf(o, id), {}});
+        return r->readings.back();
+    };
+    // An antenna polled with nothing read: the label alone (no port known).
+    if (o.tag_readings.empty()) reading(mrptReaderId(o, ""));
+    for (const auto& tr : o.tag_readings)
+    {
+        auto& x = reading(mrptReaderId(o, tr.antennaPort));
+        if (std::find(x.tags.begin(), x.tags.end(), tr.epc) == x.tags.end())
+            x.tags.push_back(tr.epc);
+    }
+    st.rfid = r;
+}
+
+bool CRawlogReader::next(TRawlogStep& st)
+{
+    CActionCollection::Ptr acts;
+    CSensoryFrame::Ptr sf;
+    if (obsOnly_)
+    {
+        if (!nextFlatInstant(sf)) return false;
+        acts = std::make_shared<CActionCollection>();
+    }
+    else if (!nextPair(acts, sf))
+        return false;
     st = TRawlogStep();
     st.index = steps_++;
     st.action = acts;
@@ -205,16 +332,31 @@ bool CRawlogReader::next(TRawlogStep& st)
         else if (auto i = std::dynamic_pointer_cast<rfir::obs::CObservationIRSignals>(o)) st.ir = i;
         else if (auto b = std::dynamic_pointer_cast<CObservationBearingRange>(o)) st.rb = b;
     }
+    for (const auto& o : *sf)
+        if (auto m = std::dynamic_pointer_cast<CObservationRFID>(o)) addMrptRFID(st, *m);
+    if (obsOnly_)
+    {
+        // Increments between absolute odometry poses; the first only anchors
+        // the frame (as rfir::slam::inputsFromSteps and the writer do).
+        if (st.odometry)
+        {
+            if (lastOdometry_) st.odometryIncrement = *st.odometry - *lastOdometry_;
+            lastOdometry_ = st.odometry;
+        }
+        return true;
+    }
     // The writer gives the first odometry record a zero movement (it only
-    // anchors the frame); a filter would still draw motion noise for it. A
-    // real first movement (another program's rawlog) is kept.
+    // anchors the frame), and an instant without odometry one too (MRPT's
+    // apps want a movement in every action); a filter would still draw
+    // motion noise for them. A real first movement (another program's
+    // rawlog) is kept.
     const bool anchor = st.odometry && !sawOdometry_;
     if (st.odometry) sawOdometry_ = true;
     if (auto mv = acts->getBestMovementEstimation())
     {
         const auto& inc = mv->rawOdometryIncrementReading;
-        if (!anchor || inc.x() != 0 || inc.y() != 0 || inc.phi() != 0)
-            st.odometryIncrement = inc;
+        const bool zero = inc.x() == 0 && inc.y() == 0 && inc.phi() == 0;
+        if (!zero || (st.odometry && !anchor)) st.odometryIncrement = inc;
         if (!haveT) st.t = mrpt::Clock::toDouble(mv->timestamp);
     }
     return true;

@@ -38,6 +38,8 @@ std::string withoutRawlogExt(const std::string& p) {
 
 struct TLoaded {
     rfir::obs::CObservationLogHeader header;
+    bool hasHeader = true;
+    std::optional<mrpt::poses::CPose2D> firstOdometry;  //!< first absolute pose
     std::vector<rfir::slam::TSlamInput> inputs;
     rfir::eval::TRawlogInfo info;  //!< odometry and sensor geometry, for the scoring
 };
@@ -49,10 +51,12 @@ TLoaded readInputs(const std::string& path) {
     rfir::common::CRawlogReader rd(path);
     TLoaded l;
     l.header = rd.header();
+    l.hasHeader = rd.hasHeader();
     rfir::eval::CRawlogInfoBuilder info(l.header);
     rfir::common::TRawlogStep st;
     while (rd.next(st)) {
         info.add(st);
+        if (!l.firstOdometry) l.firstOdometry = st.odometry;
         rfir::slam::TSlamInput in;
         in.t = st.t;
         in.odometryIncrement = st.odometryIncrement;
@@ -63,6 +67,31 @@ TLoaded readInputs(const std::string& path) {
     if (l.inputs.empty()) throw std::runtime_error(path + ": no sensing instant");
     l.info = info.finish();
     return l;
+}
+
+/** Where the filter starts: --start, else the rawlog header's start pose,
+ * else (no header, e.g. a rawlog cut by rawlog-edit) the first odometry pose
+ * (the simulator's odometry starts at the true pose), said on stderr. */
+mrpt::poses::CPose2D startPose(const TAppArgs& a, const TLoaded& d) {
+    if (a.start) return *a.start;
+    if (d.header.startPose) return *d.header.startPose;
+    const auto p = d.firstOdometry.value_or(mrpt::poses::CPose2D());
+    std::ostringstream o;
+    o << "rfir-slam: warning: " << a.rawlog
+      << (d.hasHeader ? ": the rfir log header gives no start pose"
+                      : ": no rfir log header (cut by rawlog-edit?)")
+      << "; assumed: start pose " << p.x() << " " << p.y() << " " << p.phi()
+      << (d.firstOdometry ? " (the first odometry pose)" : " (no odometry pose)")
+      << " (set it with --start X Y PHI)";
+    if (!d.hasHeader) {
+        o << "; RFID readers from the observations:";
+        for (const auto& r : d.info.readers)
+            o << " " << r.id << " (" << r.x << ", " << r.y << ", " << 2 * r.halfX << " x "
+              << 2 * r.halfY << " m)";
+        if (d.info.readers.empty()) o << " none";
+    }
+    std::cerr << o.str() << "\n";
+    return p;
 }
 
 /** The ground truth of a run, loaded once for every set of outputs. */
@@ -243,7 +272,7 @@ int runSlamApp(const TAppArgs& args) {
               << ini << ", seed " << a.seed << ")\n";
     // The folder is checked (and refused if it holds foreign files) before the run.
     rfir::common::COutputFolder out(a.outDir, kOutputPatterns, "rfir-slam");
-    const TLoaded data = readInputs(a.rawlog);
+    TLoaded data = readInputs(a.rawlog);
     // Refused before the filter runs and anything is written.
     if (a.smooth)
         for (const auto& in : data.inputs)
@@ -251,8 +280,8 @@ int runSlamApp(const TAppArgs& args) {
                 throw std::runtime_error(
                     "--smooth: " + a.rawlog +
                     " has range-bearing observations; the smoother uses RFID reads only");
-    const mrpt::poses::CPose2D start =
-        a.start ? *a.start : data.header.startPose.value_or(mrpt::poses::CPose2D());
+    const mrpt::poses::CPose2D start = startPose(a, data);
+    data.info.startPose = start;  // the dead-reckoning row starts there too
     auto engine = rfir::slam::makeEngine(cfg, data.header);
     const size_t n = data.inputs.size();
     rfir::common::CProgress progress("rfir-slam", n);

@@ -1,6 +1,6 @@
 /* rfir: CRFIDTagParticleMap internals: visits, per-tag updates, the robot's
  * likelihood per read, and the robot- / tag-uncertainty options (included by
- * CRFIDTagParticleMap.cpp only). */
+ * CRFIDTagParticleMap.cpp and CRFIDTagParticleMap_prior.cpp). */
 #pragma once
 
 #include <rfir/maps/CRFIDTagParticleMap.h>

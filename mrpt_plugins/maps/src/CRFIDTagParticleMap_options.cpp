@@ -128,12 +128,25 @@ CRFIDTagParticleMap::TMapDefinition::TMapDefinition() = default;
 
 void CRFIDTagParticleMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
+    const std::string creation = prefix + "_creationOpts";
+    if (source.sectionExists(creation)) {
+        // MRPT reads its generic map options from the same section.
+        const rfir::ini::CIniSection sec(
+            source, creation,
+            {"prior_map_file", "enableSaveAs3DObject", "enableObservationLikelihood",
+             "enableObservationInsertion"});
+        priorMapFile = sec.getString("prior_map_file", "");
+        for (const char* k : {"enableSaveAs3DObject", "enableObservationLikelihood",
+                              "enableObservationInsertion"})
+            sec.getBool(k, true);
+    }
     insertionOpts.loadFromConfigFile(source, prefix + "_insertOpts");
     likelihoodOpts.loadFromConfigFile(source, prefix + "_likelihoodOpts");
 }
 
 void CRFIDTagParticleMap::TMapDefinition::dumpToTextStream_map_specific(
     std::ostream& out) const {
+    out << "prior_map_file      = " << priorMapFile << "\n";
     insertionOpts.dumpToTextStream(out);
     likelihoodOpts.dumpToTextStream(out);
 }
@@ -144,5 +157,6 @@ mrpt::maps::CMetricMap* CRFIDTagParticleMap::internal_CreateFromMapDefinition(
     auto* m = new CRFIDTagParticleMap();
     m->insertionOptions = def.insertionOpts;
     m->likelihoodOptions = def.likelihoodOpts;
+    if (!def.priorMapFile.empty()) m->loadPriorFromTextFile(def.priorMapFile);
     return m;
 }

@@ -11,10 +11,12 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CObservationRFID.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,7 @@ public:
     size_t stepsWritten() const { return steps_; }
 
 private:
+    mrpt::obs::CActionRobotMovement2D zeroMovement(mrpt::Clock::time_point ts) const;
     std::string path_, tmp_;
     std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
     mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motion_;
@@ -65,9 +68,12 @@ struct TRawlogStep
     mrpt::obs::CObservationBearingRange::Ptr rb;
 };
 
-/** Reads a project rawlog pair by pair. Unlike CRawlog's helpers it never
- * swallows an error: a corrupt entry or an unregistered class throws
- * std::runtime_error naming the file and entry. */
+/** Reads a rawlog instant by instant: the project's action/sensory-frame
+ * layout, or MRPT's observation-only layout (observations with the same
+ * timestamp form an instant; CObservationOdometry poses give the increments).
+ * MRPT's CObservationRFID is read into `rfid` (docs/rawlog-layout.md). Unlike
+ * CRawlog's helpers it never swallows an error: a corrupt entry or an
+ * unregistered class throws std::runtime_error naming the file and entry. */
 class CRawlogReader
 {
 public:
@@ -75,19 +81,31 @@ public:
     /** The log header (an empty one, with a warning on stderr, when the rawlog
      * was not written by this project). */
     const rfir::obs::CObservationLogHeader& header() const { return *header_; }
+    /** False when the rawlog has no rfir log header (header() is then empty). */
+    bool hasHeader() const { return hasHeader_; }
     /** Next instant; false at the end of the file. */
     bool next(TRawlogStep& step);
     const std::string& path() const { return path_; }
 
 private:
     mrpt::serialization::CSerializable::Ptr readObject();
+    bool nextPair(mrpt::obs::CActionCollection::Ptr& acts, mrpt::obs::CSensoryFrame::Ptr& sf);
+    bool nextFlatInstant(mrpt::obs::CSensoryFrame::Ptr& sf);
+    void addMrptRFID(TRawlogStep& st, const mrpt::obs::CObservationRFID& o);
+    rfir::obs::TRFIDReader readerOf(const mrpt::obs::CObservationRFID& o,
+                                    const std::string& id);
     std::string path_;
     mrpt::io::CFileGZInputStream in_;
     size_t entry_ = 0, steps_ = 0;
     bool sawOdometry_ = false;  //!< an absolute odometry record was read
+    bool obsOnly_ = false;      //!< MRPT's observation-only layout
+    bool hasHeader_ = true;
     rfir::obs::CObservationLogHeader::Ptr header_;
     std::optional<std::pair<mrpt::obs::CActionCollection::Ptr, mrpt::obs::CSensoryFrame::Ptr>>
         pending_;
+    mrpt::obs::CObservation::Ptr pendingObs_;  //!< observation-only: read ahead
+    std::optional<mrpt::poses::CPose2D> lastOdometry_;  //!< observation-only
+    std::set<std::string> warnedReaders_;
 };
 
 }  // namespace rfir::common

@@ -172,6 +172,14 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
      * output format), sorted by ID. Throws on I/O error. */
     void saveToTextFile(const std::string& path) const;
 
+    /** Adds fixed tags and landmarks from a map text file (`tag <id> <x> <y>
+     * [<sx> <sy>]`, `landmark ...`, as textlog.md; other records skipped), e.g.
+     * a ground truth to localize against: each entry's particles are drawn
+     * from N(x, sx^2) x N(y, sy^2) (all at (x, y) without deviations). Throws
+     * naming the file and line of a malformed record. INI:
+     * `<map>_creationOpts` key `prior_map_file`. */
+    void loadPriorFromTextFile(const std::string& path);
+
     /** Base seed of the per-update generators (every insert reseeds from
      * (seed, step), so copies made by serialization continue identically). */
     void setRandomSeed(uint64_t seed) { insertionOptions.seed = seed; }
@@ -243,6 +251,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     } likelihoodOptions;
 
     MAP_DEFINITION_START(CRFIDTagParticleMap)
+    std::string priorMapFile;  //!< creationOpts prior_map_file ("": none)
     rfir::maps::CRFIDTagParticleMap::TInsertionOptions insertionOpts;
     rfir::maps::CRFIDTagParticleMap::TLikelihoodOptions likelihoodOpts;
     MAP_DEFINITION_END(CRFIDTagParticleMap)

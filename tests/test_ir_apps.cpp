@@ -105,7 +105,7 @@ TEST(IRApps, LocalizeRejectsUnknownIniKeyAndSection) {
                           "/run.gt_map.txt' --out-dir '" + kDir + "/o'"),
                  nullptr, &err),
               1);
-    EXPECT_NE(err.find("unknown key 'k_xyz'"), std::string::npos) << err;
+    EXPECT_NE(err.find("[motion] k_xyz: unknown key"), std::string::npos) << err;
     EXPECT_NE(err.find("[motion]"), std::string::npos) << err;
     const std::string bad2 = kDir + "/bad_section.ini";
     std::ofstream(bad2) << ini << "\n[localisation]\nnum_particles = 5\n";
@@ -121,7 +121,8 @@ TEST(IRApps, LocalizeRejectsUnknownIniKeyAndSection) {
                           "/run.gt_map.txt' --out-dir '" + kDir + "/o'"),
                  nullptr, &err),
               1);
-    EXPECT_NE(err.find("key 'association'"), std::string::npos) << err;
+    EXPECT_NE(err.find("] association: unknown value 'nearest'"), std::string::npos)
+        << err;
 }
 
 TEST(IRApps, LocalizeBadEmitterFileNamesLine) {

@@ -158,7 +158,7 @@ TEST(IREmitterMap, IniRejectsUnknownKey) {
         inits.loadFromConfigFile(cfg, "MetricMap");
         FAIL() << "no error";
     } catch (const std::exception& e) {
-        EXPECT_NE(std::string(e.what()).find("unknown key 'sigma_volt'"),
+        EXPECT_NE(std::string(e.what()).find("sigma_volt: unknown key"),
                   std::string::npos)
             << e.what();
         EXPECT_NE(std::string(e.what()).find("MetricMap_irEmitterMap_00_likelihoodOpts"),

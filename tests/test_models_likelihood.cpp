@@ -1,6 +1,6 @@
 // Likelihood values computed by hand, resampling and INI key checks.
 #include <rfir/models/detection_likelihood.h>
-#include <rfir/models/ini_check.h>
+#include <rfir/models/ini_reader.h>
 #include <rfir/models/range_bearing.h>
 #include <rfir/models/resampling.h>
 
@@ -108,37 +108,57 @@ TEST(Resampling, SystematicIsExactAndSeeded) {
 }
 
 TEST(IniCheck, UnknownKeysAndBadValuesNameTheKey) {
+    using rfir::ini::CIniSection;
+    using rfir::ini::TRange;
     mrpt::config::CConfigFileMemory cfg(
         "[s]\nalpha = 1\nbeta = x\nmode = fast\nn = 0\nm = -2\n");
-    EXPECT_NO_THROW(rfir::checkIniKeys(cfg, "s", {"alpha", "beta", "mode", "n", "m"}));
-    EXPECT_NO_THROW(rfir::checkIniKeys(cfg, "missing", {}));
+    const std::vector<std::string> all = {"alpha", "beta", "mode", "n", "m", "absent"};
+    EXPECT_NO_THROW(CIniSection(cfg, "s", all));
+    EXPECT_NO_THROW(CIniSection(cfg, "missing", {}));
     try {
-        rfir::checkIniKeys(cfg, "s", {"alpha", "beta", "n", "m"});
+        CIniSection(cfg, "s", {"alpha", "beta", "n", "m"});
         FAIL();
-    } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("'mode'"), std::string::npos) << e.what();
+    } catch (const rfir::ini::CIniError& e) {
+        EXPECT_NE(std::string(e.what()).find("mode"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("[s]"), std::string::npos) << e.what();
     }
     auto msg = [&](auto f) {
         try {
             f();
-        } catch (const std::runtime_error& e) {
+        } catch (const rfir::ini::CIniError& e) {
             return std::string(e.what());
         }
         return std::string("no throw");
     };
+    const CIniSection s(cfg, "s", all);
     EXPECT_NE(msg([&] {
-                  rfir::readIniEnum(cfg, "s", "mode", {"slow", "exact"}, 0);
+                  s.getEnum("mode", {"slow", "exact"}, 0);
               }).find("mode"),
               std::string::npos);
-    EXPECT_NE(msg([&] { rfir::readIniPositiveInt(cfg, "s", "n", 5); }).find("[s] n"),
+    EXPECT_NE(msg([&] { s.getInt("n", 5, 1, 10); }).find("[s] n"), std::string::npos);
+    EXPECT_NE(msg([&] { s.getInt("m", 5, 1, 10); }).find("[s] m"), std::string::npos);
+    EXPECT_NE(msg([&] { s.getDouble("beta", 1, TRange::aboveZero(10)); }).find("beta"),
               std::string::npos);
-    EXPECT_NE(msg([&] { rfir::readIniPositiveInt(cfg, "s", "m", 5); }).find("[s] m"),
-              std::string::npos);
-    EXPECT_NE(
-        msg([&] { rfir::readIniDouble(cfg, "s", "beta", 1, 0, true); }).find("beta"),
-        std::string::npos);
-    EXPECT_EQ(rfir::readIniPositiveInt(cfg, "s", "absent", 5), 5u);
-    EXPECT_EQ(rfir::readIniEnum(cfg, "s", "absent", {"a", "b"}, 1), 1u);
-    EXPECT_EQ(rfir::readIniDouble(cfg, "s", "alpha", 7, 0, true), 1.0);
+    EXPECT_EQ(s.getInt("absent", 5, 1, 10), 5);
+    EXPECT_EQ(s.getEnum("absent", {"a", "b"}, 1), 1u);
+    EXPECT_EQ(s.getDouble("alpha", 7, TRange::aboveZero(10)), 1.0);
+}
+
+// The values MRPT's read_int and read_double let through (issue 15): a
+// leading integer kept, nan and 1e308 taken as numbers.
+TEST(IniCheck, StrictNumbers) {
+    using rfir::ini::TRange;
+    mrpt::config::CConfigFileMemory cfg(
+        "[s]\na = 5e2\nb = 2.9\nc = 500x\nd = nan\ne = 1e308\nf = 500\ng = inf\n"
+        "h = 1e999\ni = 99999999999999999999\nj =\n");
+    const rfir::ini::CIniSection s(cfg, "s",
+                                   {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"});
+    for (const char* k : {"a", "b", "c", "d", "e", "i", "j"})
+        EXPECT_THROW(s.getInt(k, 1, 1, 1000000), rfir::ini::CIniError) << k;
+    EXPECT_EQ(s.getInt("f", 1, 1, 1000000), 500);
+    for (const char* k : {"c", "d", "e", "g", "h", "j"})
+        EXPECT_THROW(s.getDouble(k, 1, TRange::closed(-10, 1000)), rfir::ini::CIniError)
+            << k;
+    EXPECT_EQ(s.getDouble("a", 1, TRange::closed(0, 1000)), 500.0);
+    EXPECT_THROW(s.getDouble("f", 1, TRange::closed(0, 100)), rfir::ini::CIniError);
 }

@@ -189,3 +189,51 @@ TEST(SlamApp, SmoothWritesItsOutputs) {
     EXPECT_NE(r2.out.find("range-bearing"), std::string::npos) << r2.out;
     EXPECT_FALSE(mrpt::system::fileExists(rb + "/o/path.tum"));  // refused up front
 }
+
+// Outputs belong to one run (issue 15 item 3): a run without --smooth into the
+// folder of a --smooth run leaves no *_smoothed* file; stats.json names the
+// run and its files; a failing run leaves the earlier set as it was; a folder
+// holding files rfir-slam does not write is refused before anything runs.
+TEST(SlamApp, OutputsBelongToOneRun) {
+    const std::string d = dataDir(), out = d + "/out_sets";
+    auto r = run("--rawlog " + d + "/run.rawlog --out-dir " + out + " --smooth --seed 1");
+    ASSERT_EQ(r.code, 0) << r.out;
+    ASSERT_TRUE(mrpt::system::fileExists(out + "/path_smoothed.tum"));
+    r = run("--rawlog " + d + "/run.rawlog --out-dir " + out + " --seed 2");
+    ASSERT_EQ(r.code, 0) << r.out;
+    for (const char* f : {"path_smoothed.tum", "map_smoothed.txt",
+                          "path_map_smoothed.png", "errors_smoothed.json"})
+        EXPECT_FALSE(mrpt::system::fileExists(out + "/" + f)) << f;
+    const std::string stats = slurp(out + "/stats.json");
+    EXPECT_NE(stats.find("\"seed\": 2"), std::string::npos) << stats;
+    EXPECT_NE(stats.find("\"ini_md5\": \""), std::string::npos) << stats;
+    EXPECT_NE(stats.find("--seed 2"), std::string::npos) << stats;
+    EXPECT_NE(stats.find("\"files\": [\"errors.json\", \"map.txt\", \"path.tum\", "
+                         "\"path_map.png\", \"settings.ini\", \"stats.json\"]"),
+              std::string::npos)
+        << stats;
+    EXPECT_NE(slurp(out + "/settings.ini").find("# files: errors.json map.txt"),
+              std::string::npos);
+
+    // A failing run (bad INI value) leaves the seed-2 set byte for byte.
+    const std::string before = slurp(out + "/path.tum");
+    const std::string bad = d + "/bad_motion.ini";
+    std::ofstream(bad) << "[motion]\na1 = 1e308\n";
+    r = run("--rawlog " + d + "/run.rawlog --out-dir " + out + " --seed 3 --config " +
+            bad);
+    EXPECT_NE(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("[motion] a1"), std::string::npos) << r.out;
+    EXPECT_EQ(slurp(out + "/path.tum"), before);
+    EXPECT_EQ(slurp(out + "/stats.json"), stats);
+    EXPECT_FALSE(mrpt::system::directoryExists(out + ".tmp"));
+
+    // Not rfir-slam's folder: refused, the foreign file kept.
+    const std::string foreign = d + "/out_foreign";
+    mrpt::system::createDirectory(foreign);
+    std::ofstream(foreign + "/notes.txt") << "mine\n";
+    r = run("--rawlog " + d + "/run.rawlog --out-dir " + foreign);
+    EXPECT_NE(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("notes.txt"), std::string::npos) << r.out;
+    EXPECT_EQ(slurp(foreign + "/notes.txt"), "mine\n");
+    EXPECT_FALSE(mrpt::system::fileExists(foreign + "/path.tum"));
+}

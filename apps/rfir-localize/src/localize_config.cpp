@@ -3,7 +3,7 @@
 
 #include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>
-#include <rfir/ir/ini_util.h>
+#include <rfir/models/ini_reader.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
@@ -30,19 +30,20 @@ void checkSections(const mrpt::config::CConfigFileBase& c, const std::string& fi
         bool ok = false;
         for (const auto& a : allowed) ok = ok || a == s;
         if (!ok)
-            throw std::runtime_error(file + ": unknown INI section [" + s +
+            throw std::runtime_error("unknown INI section [" + s +
                                      "] (allowed: localization, motion, MetricMap, " +
                                      kMapPrefix + "_creationOpts, _insertOpts, " +
                                      "_likelihoodOpts)");
     }
-    rfir::ir::ini::checkKeys(c, "MetricMap", {"irEmitterMap_count"});
-    if (c.read_int("MetricMap", "irEmitterMap_count", 1) != 1)
-        throw std::runtime_error(file +
-                                 ": INI section [MetricMap], key 'irEmitterMap_count': "
-                                 "must be 1");
-    rfir::ir::ini::checkKeys(c, kMapPrefix + "_insertOpts",
-                             {"enableSaveAs3DObject", "enableObservationLikelihood",
-                              "enableObservationInsertion"});
+    const rfir::ini::CIniSection mm(c, "MetricMap", {"irEmitterMap_count"});
+    mm.getInt("irEmitterMap_count", 1, 1, 1);
+    const rfir::ini::CIniSection ins(
+        c, kMapPrefix + "_insertOpts",
+        {"enableSaveAs3DObject", "enableObservationLikelihood",
+         "enableObservationInsertion"});
+    for (const char* k : {"enableSaveAs3DObject", "enableObservationLikelihood",
+                          "enableObservationInsertion"})
+        ins.getBool(k, true);
 }
 }  // namespace
 
@@ -88,7 +89,8 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
             c.write("MetricMap", "irEmitterMap_count", 1);
         // --emitters wins; a relative emitter_file is relative to the INI.
         const std::string sec = kMapPrefix + "_creationOpts";
-        ef = rfir::ir::ini::readString(c, sec, "emitter_file", "");
+        ef = rfir::ini::CIniSection(c, sec, {"emitter_file"})
+                 .getString("emitter_file", "");
         if (!emitterOverride.empty())
             ef = std::filesystem::absolute(emitterOverride).string();
         else if (!ef.empty() && std::filesystem::path(ef).is_relative())
@@ -98,7 +100,6 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
         // MRPT's map factory come back wrapped in its exception format.
         rfir::maps::CIREmitterMap::TLikelihoodOptions check;
         check.loadFromConfigFile(c, kMapPrefix + "_likelihoodOpts");
-        rfir::ir::ini::checkKeys(c, sec, {"emitter_file"});
         if (!ef.empty()) rfir::ir::TEmitterSet::load(ef);
         mrpt::maps::TSetOfMetricMapInitializers inits;
         inits.loadFromConfigFile(c, "MetricMap");
@@ -107,7 +108,10 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
         cfg.map = mm.mapByClass<rfir::maps::CIREmitterMap>();
         cfg.emitterPath = ef;
     } catch (const std::exception& e) {
-        const std::string what = cleanMessage(e);
+        // The INI reader's messages are clean already (and start with "[").
+        const std::string what = dynamic_cast<const rfir::ini::CIniError*>(&e)
+                                     ? std::string(e.what())
+                                     : cleanMessage(e);
         // Emitter-file errors already name their file and line.
         if (what.rfind(ef + ":", 0) == 0) throw std::runtime_error(what);
         throw std::runtime_error(cfg.iniPath + ": " + what);

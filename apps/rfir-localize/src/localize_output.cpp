@@ -3,6 +3,7 @@
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/map_io.h>
+#include <rfir/common/output_set.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
@@ -67,7 +68,8 @@ TEvals evaluate(const TConfig& cfg, const TRunResult& res) {
     return ev;
 }
 
-std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& ev) {
+std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
+                      const std::string& identity) {
     std::ostringstream o;
     o << std::setprecision(10) << "{\n"
       << "  \"rawlog\": \"" << cfg.rawlogPath << "\",\n"
@@ -94,7 +96,7 @@ std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& e
       << "  \"reset_events\": " << res.resetEvents << ",\n"
       << "  \"reset_particles\": " << res.resetParticles << ",\n"
       << "  \"odometry_start\": \"" << res.odometryStart << "\",\n"
-      << "  \"filter_seconds\": " << res.seconds;
+      << "  \"filter_seconds\": " << res.seconds << ",\n  \"run\": " << identity;
     for (size_t i = 0; i < ev.rows.size(); i++)
         o << ",\n  \"" << (i == 0 ? "path_errors" : "spot_errors")
           << "\": " << rfir::eval::toJson(ev.rows[i]);
@@ -119,21 +121,32 @@ void plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
 
 std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
                          const std::string& commandLine) {
-    const fs::path out(cfg.outDir);
+    // One set per run: staged beside --out-dir and renamed into place, so a
+    // stale errors.txt of a run with ground truth cannot outlive it.
+    rfir::common::COutputFolder out(
+        cfg.outDir, {"path.tum", "stats.json", "settings.ini", "errors.txt", "path.png"},
+        "rfir-localize");
     const TEvals ev = evaluate(cfg, res);
     std::string table;
     if (!ev.rows.empty()) table = rfir::eval::formatErrorTable(ev.rows);
-    rfir::common::saveTUM((out / "path.tum").string(), res.path);
-    rfir::common::writeFileAtomically(
-        (out / "stats.json").string(),
-        [&](std::ostream& o) { o << statsJson(cfg, res, ev); });
-    rfir::common::writeFileAtomically(
-        (out / "settings.ini").string(),
-        [&](std::ostream& o) { o << settingsIni(cfg, commandLine); });
+    rfir::common::saveTUM(out.file("path.tum"), res.path);
     if (!table.empty())
-        rfir::common::writeFileAtomically((out / "errors.txt").string(),
+        rfir::common::writeFileAtomically(out.file("errors.txt"),
                                           [&](std::ostream& o) { o << table; });
-    plot(cfg, res, ev, (out / "path.png").string());
+    plot(cfg, res, ev, out.file("path.png"));
+    const std::string stats = out.file("stats.json"), settings = out.file("settings.ini");
+    const auto files = out.files();
+    std::string list;
+    for (const auto& f : files) list += " " + f;
+    const std::string id = rfir::common::runIdentityJson(cfg.seed, cfg.iniPath, files);
+    rfir::common::writeFileAtomically(
+        stats, [&](std::ostream& o) { o << statsJson(cfg, res, ev, id); });
+    rfir::common::writeFileAtomically(settings, [&](std::ostream& o) {
+        o << "# rfir-localize " << rfir::common::rfirVersion() << "; INI " << cfg.iniPath
+          << " (md5 " << rfir::common::fileMD5(cfg.iniPath) << "); files:" << list << "\n"
+          << settingsIni(cfg, commandLine);
+    });
+    out.commit();
     return table;
 }
 

@@ -6,6 +6,7 @@
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/common/map_io.h>
+#include <rfir/common/output_set.h>
 #include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
 #include <rfir/common/slam_run.h>
@@ -153,7 +154,7 @@ TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
 }
 
 std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
-                      uint64_t seed) {
+                      uint64_t seed, const std::string& identity) {
     size_t tags = 0, lms = 0;
     for (const auto& l : run.map) (l.isTag ? tags : lms)++;
     std::ostringstream o;
@@ -164,8 +165,35 @@ std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSla
       << ", \"mean_update_time_s\": " << run.meanStepTime
       << ", \"max_update_time_s\": " << run.maxStepTime
       << ", \"total_time_s\": " << run.totalTime << ", \"kidnap_resets\": " << run.resets
-      << "}\n";
+      << ", \"run\": " << identity << "}\n";
     return o.str();
+}
+
+const std::vector<std::string> kOutputPatterns = {"path*.tum",     "map*.txt",
+                                                  "path_map*.png", "errors*.json",
+                                                  "scene*.3Dscene", "error_time*.png",
+                                                  "settings.ini",  "stats.json"};
+
+/** settings.ini and stats.json, last: they name the run and every file it wrote. */
+void writeSettingsAndStats(rfir::common::COutputFolder& out,
+                           const rfir::slam::TSlamConfig& cfg,
+                           const rfir::slam::TSlamRun& run, uint64_t seed,
+                           const std::string& ini) {
+    const std::string settingsPath = out.file("settings.ini");
+    const std::string statsPath = out.file("stats.json");
+    const auto files = out.files();
+    const std::string id = rfir::common::runIdentityJson(seed, ini, files);
+    std::string list;
+    for (const auto& f : files) list += " " + f;
+    const std::string settings = "# rfir-slam " + rfir::common::rfirVersion() + ": " +
+                                 rfir::common::processCommandLine() + "\n# seed " +
+                                 std::to_string(seed) + ", INI " + ini + " (md5 " +
+                                 rfir::common::fileMD5(ini) + ")\n# files:" + list +
+                                 "\n" + rfir::slam::dumpSlamConfig(cfg);
+    rfir::common::writeFileAtomically(settingsPath,
+                                      [&](std::ostream& o) { o << settings; });
+    rfir::common::writeFileAtomically(
+        statsPath, [&](std::ostream& o) { o << statsJson(cfg, run, seed, id); });
 }
 
 /** Ground truth beside the rawlog unless given. */
@@ -217,35 +245,34 @@ void writeErrors(const std::string& file, const rfir::eval::TEvalResult& r) {
 /** path<sfx>.tum, map<sfx>.txt, path_map<sfx>.png and errors<sfx>.json of a
  * run, named `label` in the table, the figure and the map's header. */
 std::optional<rfir::eval::TEvalResult> writeAndScore(
-    const TAppArgs& a, const TTruth& truth, const rfir::slam::TSlamRun& run,
-    const std::string& sfx, const std::string& label, const std::string& legend) {
+    const TAppArgs& a, rfir::common::COutputFolder& out, const TTruth& truth,
+    const rfir::slam::TSlamRun& run, const std::string& sfx, const std::string& label,
+    const std::string& legend) {
     const TPath2D path = rfir::common::stampedPath(run);
     const TMapFile map = rfir::common::landmarkEntries(run.map);
-    rfir::common::saveTUM(a.outDir + "/path" + sfx + ".tum", path);
-    rfir::common::saveMapFile(a.outDir + "/map" + sfx + ".txt", map,
+    rfir::common::saveTUM(out.file("path" + sfx + ".tum"), path);
+    rfir::common::saveMapFile(out.file("map" + sfx + ".txt"), map,
                               "rfir-slam " + label + ": " + legend);
     rfir::eval::TMapFigure fig;
     fig.title = "rfir-slam " + label + ": " + mrpt::system::extractFileName(a.rawlog);
     fig.estPath = path;
     fig.estMap = map;
     auto r = evaluate(truth, label, path, map, fig);
-    rfir::eval::plotMapFigure(a.outDir + "/path_map" + sfx + ".png", fig);
-    rfir::eval::saveScene3D(a.outDir + "/scene" + sfx + ".3Dscene", fig, truth.readers);
+    rfir::eval::plotMapFigure(out.file("path_map" + sfx + ".png"), fig);
+    rfir::eval::saveScene3D(out.file("scene" + sfx + ".3Dscene"), fig, truth.readers);
     if (r) {
-        writeErrors(a.outDir + "/errors" + sfx + ".json", *r);
-        rfir::eval::plotErrorsOverTime(a.outDir + "/error_time" + sfx + ".png", {*r},
+        writeErrors(out.file("errors" + sfx + ".json"), *r);
+        rfir::eval::plotErrorsOverTime(out.file("error_time" + sfx + ".png"), {*r},
                                        fig.title);
     }
     return r;
 }
 
 /** --smooth: the offline refinement of the filter's run and its outputs. */
-std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
-                                                      const rfir::slam::TSlamConfig& cfg,
-                                                      const TLoaded& data,
-                                                      const TTruth& truth,
-                                                      const mrpt::poses::CPose2D& start,
-                                                      const rfir::slam::TSlamRun& run) {
+std::optional<rfir::eval::TEvalResult> smoothAndWrite(
+    const TAppArgs& a, rfir::common::COutputFolder& out,
+    const rfir::slam::TSlamConfig& cfg, const TLoaded& data, const TTruth& truth,
+    const mrpt::poses::CPose2D& start, const rfir::slam::TSlamRun& run) {
     rfir::slam::TGraphSmootherParams p;
     p.motion = cfg.motion;
     logStream(a) << "rfir-slam: smoothing " << run.path.size() << " poses offline\n";
@@ -253,7 +280,7 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(const TAppArgs& a,
     logStream(a) << "rfir-slam: smoothed in " << res.iterations << " iterations ("
                  << res.reads << " reads; cost " << res.initialCost << " -> "
                  << res.finalCost << ")\n";
-    return writeAndScore(a, truth, res.run, "_smoothed", cfg.slam.method + " smoothed",
+    return writeAndScore(a, out, truth, res.run, "_smoothed", cfg.slam.method + " smoothed",
                          "<tag> <id> <x> <y> <sx> <sy>");
 }
 }  // namespace
@@ -277,6 +304,8 @@ int runSlamApp(const TAppArgs& args) {
 
     logStream(a) << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "
                  << ini << ", seed " << a.seed << ")\n";
+    // The folder is checked (and refused if it holds foreign files) before the run.
+    rfir::common::COutputFolder out(a.outDir, kOutputPatterns, "rfir-slam");
     TLoaded data = readInputs(a.rawlog);
     // Refused before the filter runs and anything is written.
     if (a.smooth)
@@ -294,20 +323,13 @@ int runSlamApp(const TAppArgs& args) {
                                            [&progress](size_t i) { progress.update(i); });
     progress.finish();
 
-    if (!mrpt::system::directoryExists(a.outDir) &&
-        !mrpt::system::createDirectory(a.outDir))
-        throw std::runtime_error("cannot create output folder '" + a.outDir + "'");
     const TTruth truth = loadTruth(a, data.info);
-    const auto errs = writeAndScore(a, truth, run, "", cfg.slam.method,
+    const auto errs = writeAndScore(a, out, truth, run, "", cfg.slam.method,
                                     "<tag or landmark> <id> <x> <y> <sx> <sy>");
-    const std::string settings = rfir::slam::dumpSlamConfig(cfg);
-    rfir::common::writeFileAtomically(a.outDir + "/settings.ini",
-                                      [&](std::ostream& o) { o << settings; });
-    rfir::common::writeFileAtomically(a.outDir + "/stats.json", [&](std::ostream& o) {
-        o << statsJson(cfg, run, a.seed);
-    });
     std::optional<rfir::eval::TEvalResult> smoothed;
-    if (a.smooth) smoothed = smoothAndWrite(a, cfg, data, truth, start, run);
+    if (a.smooth) smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run);
+    writeSettingsAndStats(out, cfg, run, a.seed, ini);
+    out.commit();
     std::vector<rfir::eval::TEvalResult> rows;
     if (errs) rows.push_back(*errs);
     if (smoothed) {

@@ -1,6 +1,6 @@
 /* rfir: INI options and map definition of CIREmitterMap. */
-#include <rfir/ir/ini_util.h>
 #include <rfir/maps/CIREmitterMap.h>
+#include <rfir/models/ini_reader.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/system/filesystem.h>
@@ -8,7 +8,7 @@
 #include <ostream>
 
 using namespace rfir::maps;
-namespace ini = rfir::ir::ini;
+using R = rfir::ini::TRange;
 
 MAP_DEFINITION_REGISTER("rfir::maps::CIREmitterMap,irEmitterMap",
                         rfir::maps::CIREmitterMap)
@@ -40,30 +40,36 @@ const std::vector<std::string>& CIREmitterMap::TLikelihoodOptions::allowedKeys()
 
 void CIREmitterMap::TLikelihoodOptions::loadFromConfigFile(
     const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    ini::checkKeys(c, s, allowedKeys());
+    const rfir::ini::CIniSection s_sec(c, s, allowedKeys());
     auto& cv = params.curve;
-    cv.c0 = ini::readDouble(c, s, "curve_c0", cv.c0);
-    cv.c1 = ini::readDouble(c, s, "curve_c1", cv.c1);
-    cv.c2 = ini::readDouble(c, s, "curve_c2", cv.c2);
-    cv.fitHeight = ini::readDouble(c, s, "fit_height", cv.fitHeight, 1e-3);
-    cv.maxDistance = ini::readDouble(c, s, "max_distance", cv.maxDistance, 1e-3);
+    cv.c0 = s_sec.getDouble("curve_c0", cv.c0, R::closed(-1000, 1000));
+    cv.c1 = s_sec.getDouble("curve_c1", cv.c1, R::closed(-1000, 1000));
+    cv.c2 = s_sec.getDouble("curve_c2", cv.c2, R::closed(-1000, 1000));
+    cv.fitHeight = s_sec.getDouble("fit_height", cv.fitHeight, R::closed(1e-3, 100));
+    cv.maxDistance =
+        s_sec.getDouble("max_distance", cv.maxDistance, R::closed(1e-3, 1000));
     cv.heightModel = rfir::ir::TVoltageCurve::HeightModel(
-        ini::readEnum(c, s, "height_model", kHeightModels, size_t(cv.heightModel)));
-    params.sigmaVolts = ini::readDouble(c, s, "sigma_volts", params.sigmaVolts, 1e-6);
-    params.sigmaBelief = ini::readDouble(c, s, "sigma_belief", params.sigmaBelief, 1e-6);
-    params.outOfRangeLogLik =
-        ini::readDouble(c, s, "out_of_range_loglik", params.outOfRangeLogLik, -1e6, 0);
-    params.missLogLik = ini::readDouble(c, s, "miss_loglik", params.missLogLik, -1e6, 0);
-    params.missRadiusFraction =
-        ini::readDouble(c, s, "miss_radius_fraction", params.missRadiusFraction, 0, 1);
+        s_sec.getEnum("height_model", kHeightModels, size_t(cv.heightModel)));
+    params.sigmaVolts =
+        s_sec.getDouble("sigma_volts", params.sigmaVolts, R::closed(1e-6, 100));
+    params.sigmaBelief =
+        s_sec.getDouble("sigma_belief", params.sigmaBelief, R::closed(1e-6, 100));
+    params.outOfRangeLogLik = s_sec.getDouble(
+        "out_of_range_loglik", params.outOfRangeLogLik, R::closed(-1e6, 0));
+    params.missLogLik =
+        s_sec.getDouble("miss_loglik", params.missLogLik, R::closed(-1e6, 0));
+    params.missRadiusFraction = s_sec.getDouble(
+        "miss_radius_fraction", params.missRadiusFraction, R::closed(0, 1));
     params.outOfRangeRamp =
-        ini::readDouble(c, s, "out_of_range_ramp", params.outOfRangeRamp, 0);
-    params.areaMargin = ini::readDouble(c, s, "area_margin", params.areaMargin, 0);
+        s_sec.getDouble("out_of_range_ramp", params.outOfRangeRamp, R::closed(0, 1000));
+    params.areaMargin =
+        s_sec.getDouble("area_margin", params.areaMargin, R::closed(0, 1000));
     params.outOfAreaLogLik =
-        ini::readDouble(c, s, "out_of_area_loglik", params.outOfAreaLogLik, -1e6, 0);
-    association = TAssociation(
-        ini::readEnum(c, s, "association", kAssociations, size_t(association)));
-    verticalDistance = ini::readDouble(c, s, "vertical_distance", verticalDistance, 0);
+        s_sec.getDouble("out_of_area_loglik", params.outOfAreaLogLik, R::closed(-1e6, 0));
+    association =
+        TAssociation(s_sec.getEnum("association", kAssociations, size_t(association)));
+    verticalDistance =
+        s_sec.getDouble("vertical_distance", verticalDistance, R::closed(0, 100));
 }
 
 void CIREmitterMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const {
@@ -91,8 +97,8 @@ CIREmitterMap::TMapDefinition::TMapDefinition() = default;
 void CIREmitterMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& c, const std::string& prefix) {
     const std::string s = prefix + "_creationOpts";
-    ini::checkKeys(c, s, {"emitter_file"});
-    emitterFile = ini::readString(c, s, "emitter_file", "");
+    const rfir::ini::CIniSection s_sec(c, s, {"emitter_file"});
+    emitterFile = s_sec.getString("emitter_file", "");
     // A relative path is taken from the INI file's folder.
     const auto* f = dynamic_cast<const mrpt::config::CConfigFile*>(&c);
     if (!emitterFile.empty() && emitterFile[0] != '/' && f) {

@@ -1,32 +1,33 @@
 /* rfir: INI sections [localization] and [motion] of the IR localization. */
-#include <rfir/ir/ini_util.h>
 #include <rfir/ir/ir_localizer.h>
+#include <rfir/models/ini_reader.h>
 
+#include <cmath>
 #include <ostream>
 #include <sstream>
 
 namespace rfir::ir {
 namespace {
+using R = rfir::ini::TRange;
 const std::vector<std::string> kResampling = {"multinomial", "residual", "stratified",
                                               "systematic"};
 
-void readArea(const mrpt::config::CConfigFileBase& c, const std::string& s,
-              TLocalizerParams& p) {
-    const std::string txt = ini::readString(c, s, "init_area", "");
+void readArea(const rfir::ini::CIniSection& s_sec, TLocalizerParams& p) {
+    const std::string txt = s_sec.getString("init_area", "");
+    s_sec.declare("init_area", "4 reals", "(the emitters' box + init_margin)",
+                  "x0 y0 x1 y1, each in [-1e6, 1e6], x1 > x0, y1 > y0");
     if (txt.empty()) return;
     std::istringstream in(txt);
     double v[4];
     for (auto& x : v)
-        if (!(in >> x))
-            throw std::runtime_error(
-                "INI section [" + s +
-                "], key 'init_area': expected \"x0 y0 x1 y1\", got '" + txt + "'");
+        if (!(in >> x) || !std::isfinite(x) || std::abs(x) > 1e6)
+            s_sec.fail(
+                "init_area",
+                "expected \"x0 y0 x1 y1\" (metres, within 1e6), got '" + txt + "'");
     std::string rest;
     if ((in >> rest) || !(v[2] > v[0] && v[3] > v[1]))
-        throw std::runtime_error("INI section [" + s +
-                                 "], key 'init_area': expected x0 y0 x1 y1 with x1 > x0, "
-                                 "y1 > y0, got '" +
-                                 txt + "'");
+        s_sec.fail("init_area",
+                   "expected x0 y0 x1 y1 with x1 > x0, y1 > y0, got '" + txt + "'");
     p.initX0 = v[0];
     p.initY0 = v[1];
     p.initX1 = v[2];
@@ -38,44 +39,50 @@ void readArea(const mrpt::config::CConfigFileBase& c, const std::string& s,
 void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                           const std::string& prefix) {
     const std::string s = prefix + "localization";
-    ini::checkKeys(c, s,
-                   {"num_particles", "init_area", "init_margin", "start_from_reading",
-                    "sensor_resetting", "reset_min_fraction", "reset_ratio",
-                    "reset_distance_sigma", "reset_view_margin", "repeated_before_unique",
-                    "association_max_std", "ess_threshold", "resampling", "decode_raw"});
-    numParticles = ini::readSize(c, s, "num_particles", numParticles, 1, 10000000);
-    readArea(c, s, *this);
-    initMargin = ini::readDouble(c, s, "init_margin", initMargin, 0);
-    startFromReading = ini::readBool(c, s, "start_from_reading", startFromReading);
-    sensorResetting = ini::readBool(c, s, "sensor_resetting", sensorResetting);
+    const rfir::ini::CIniSection s_sec(
+        c, s,
+        {"num_particles", "init_area", "init_margin", "start_from_reading",
+         "sensor_resetting", "reset_min_fraction", "reset_ratio", "reset_distance_sigma",
+         "reset_view_margin", "repeated_before_unique", "association_max_std",
+         "ess_threshold", "resampling", "decode_raw"});
+    numParticles =
+        size_t(s_sec.getInt("num_particles", int64_t(numParticles), 1, 10000000));
+    readArea(s_sec, *this);
+    initMargin = s_sec.getDouble("init_margin", initMargin, R::closed(0, 1000));
+    startFromReading = s_sec.getBool("start_from_reading", startFromReading);
+    sensorResetting = s_sec.getBool("sensor_resetting", sensorResetting);
     resetMinFraction =
-        ini::readDouble(c, s, "reset_min_fraction", resetMinFraction, 0, 1);
-    resetRatio = ini::readDouble(c, s, "reset_ratio", resetRatio, 0, 1);
+        s_sec.getDouble("reset_min_fraction", resetMinFraction, R::closed(0, 1));
+    resetRatio = s_sec.getDouble("reset_ratio", resetRatio, R::closed(0, 1));
     resetDistanceSigma =
-        ini::readDouble(c, s, "reset_distance_sigma", resetDistanceSigma, 0);
-    resetViewMargin = ini::readDouble(c, s, "reset_view_margin", resetViewMargin, 0);
-    repeatedBeforeUnique =
-        ini::readBool(c, s, "repeated_before_unique", repeatedBeforeUnique);
+        s_sec.getDouble("reset_distance_sigma", resetDistanceSigma, R::closed(0, 1000));
+    resetViewMargin =
+        s_sec.getDouble("reset_view_margin", resetViewMargin, R::closed(0, 1000));
+    repeatedBeforeUnique = s_sec.getBool("repeated_before_unique", repeatedBeforeUnique);
     associationMaxStd =
-        ini::readDouble(c, s, "association_max_std", associationMaxStd, 0);
-    essThreshold = ini::readDouble(c, s, "ess_threshold", essThreshold, 0, 1);
+        s_sec.getDouble("association_max_std", associationMaxStd, R::closed(0, 1000));
+    essThreshold = s_sec.getDouble("ess_threshold", essThreshold, R::closed(0, 1));
     resampling = mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm(
-        ini::readEnum(c, s, "resampling", kResampling, size_t(resampling)));
-    decodeRaw = ini::readBool(c, s, "decode_raw", decodeRaw);
+        s_sec.getEnum("resampling", kResampling, size_t(resampling)));
+    decodeRaw = s_sec.getBool("decode_raw", decodeRaw);
 
     const std::string m = prefix + "motion";
-    ini::checkKeys(c, m,
-                   {"k_xy", "k_phi_rot", "k_phi_xy", "scale_sigma", "rot_scale_sigma",
-                    "heading_drift", "min_std_xy", "min_std_phi"});
-    motion.kXY = ini::readDouble(c, m, "k_xy", motion.kXY, 0);
-    motion.kPhiRot = ini::readDouble(c, m, "k_phi_rot", motion.kPhiRot, 0);
-    motion.kPhiXY = ini::readDouble(c, m, "k_phi_xy", motion.kPhiXY, 0);
-    motion.scaleSigma = ini::readDouble(c, m, "scale_sigma", motion.scaleSigma, 0);
+    const rfir::ini::CIniSection m_sec(
+        c, m,
+        {"k_xy", "k_phi_rot", "k_phi_xy", "scale_sigma", "rot_scale_sigma",
+         "heading_drift", "min_std_xy", "min_std_phi"});
+    motion.kXY = m_sec.getDouble("k_xy", motion.kXY, R::closed(0, 1));
+    motion.kPhiRot = m_sec.getDouble("k_phi_rot", motion.kPhiRot, R::closed(0, M_PI));
+    motion.kPhiXY = m_sec.getDouble("k_phi_xy", motion.kPhiXY, R::closed(0, M_PI));
+    motion.scaleSigma =
+        m_sec.getDouble("scale_sigma", motion.scaleSigma, R::closed(0, 1));
     motion.rotScaleSigma =
-        ini::readDouble(c, m, "rot_scale_sigma", motion.rotScaleSigma, 0);
-    motion.headingDrift = ini::readDouble(c, m, "heading_drift", motion.headingDrift, 0);
-    motion.minStdXY = ini::readDouble(c, m, "min_std_xy", motion.minStdXY, 0);
-    motion.minStdPhi = ini::readDouble(c, m, "min_std_phi", motion.minStdPhi, 0);
+        m_sec.getDouble("rot_scale_sigma", motion.rotScaleSigma, R::closed(0, 1));
+    motion.headingDrift =
+        m_sec.getDouble("heading_drift", motion.headingDrift, R::closed(0, M_PI));
+    motion.minStdXY = m_sec.getDouble("min_std_xy", motion.minStdXY, R::closed(0, 1));
+    motion.minStdPhi =
+        m_sec.getDouble("min_std_phi", motion.minStdPhi, R::closed(0, M_PI));
 }
 
 void TLocalizerParams::dumpToTextStream(std::ostream& o) const {

@@ -1,6 +1,6 @@
 /* rfir: INI options and map definition of CRFIDTagParticleMap. */
 #include <rfir/maps/CRFIDTagParticleMap.h>
-#include <rfir/models/ini_check.h>
+#include <rfir/models/ini_reader.h>
 
 #include <mrpt/core/bits_math.h>
 
@@ -33,29 +33,25 @@ const std::vector<std::string>& CRFIDTagParticleMap::TInsertionOptions::allowedK
 
 void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
     const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    rfir::checkIniKeys(c, s, allowedKeys());
-    estimator = static_cast<TTagEstimatorKind>(rfir::readIniEnum(
-        c, s, "estimator", kEstimatorNames, static_cast<size_t>(estimator)));
-    numParticles = rfir::readIniPositiveInt(c, s, "num_particles", numParticles);
-    lag = rfir::readIniPositiveInt(c, s, "lag", lag);
+    using rfir::ini::TRange;
+    const rfir::ini::CIniSection sec(c, s, allowedKeys());
+    estimator = static_cast<TTagEstimatorKind>(
+        sec.getEnum("estimator", kEstimatorNames, static_cast<size_t>(estimator)));
+    numParticles = size_t(sec.getInt("num_particles", int64_t(numParticles), 1, 1000000));
+    lag = size_t(sec.getInt("lag", int64_t(lag), 1, 100000));
+    // Sizes in metres: 10 m is far beyond any reader footprint or tag spread.
     smootherStepSigma =
-        rfir::readIniDouble(c, s, "smoother_step_sigma", smootherStepSigma, 0.0, false);
+        sec.getDouble("smoother_step_sigma", smootherStepSigma, TRange::closed(0, 10));
     rougheningSigma =
-        rfir::readIniDouble(c, s, "roughening_sigma", rougheningSigma, 0.0, false);
-    essThreshold = rfir::readIniDouble(c, s, "ess_threshold", essThreshold, 0.0, true);
-    if (essThreshold > 1.0)
-        throw std::runtime_error("[" + s + "] ess_threshold: must be <= 1");
-    resampling = static_cast<rfir::models::ResamplingScheme>(rfir::readIniEnum(
-        c, s, "resampling", kResamplingNames, static_cast<size_t>(resampling)));
-    const double sd =
-        rfir::readIniDouble(c, s, "seed", static_cast<double>(seed), 0.0, false);
-    if (sd != static_cast<double>(static_cast<uint64_t>(sd)))
-        throw std::runtime_error("[" + s + "] seed: must be a non-negative integer");
-    seed = static_cast<uint64_t>(sd);
-    tagRobotPose = static_cast<TTagRobotPose>(rfir::readIniEnum(
-        c, s, "tag_robot_pose", kRobotPoseNames, static_cast<size_t>(tagRobotPose)));
-    spreadCommitTravel =
-        rfir::readIniDouble(c, s, "spread_commit_travel", spreadCommitTravel, 0.0, false);
+        sec.getDouble("roughening_sigma", rougheningSigma, TRange::closed(0, 10));
+    essThreshold = sec.getDouble("ess_threshold", essThreshold, TRange::aboveZero(1));
+    resampling = static_cast<rfir::models::ResamplingScheme>(
+        sec.getEnum("resampling", kResamplingNames, static_cast<size_t>(resampling)));
+    seed = sec.getUInt64("seed", seed);
+    tagRobotPose = static_cast<TTagRobotPose>(sec.getEnum(
+        "tag_robot_pose", kRobotPoseNames, static_cast<size_t>(tagRobotPose)));
+    spreadCommitTravel = sec.getDouble("spread_commit_travel", spreadCommitTravel,
+                                       TRange::closed(0, 100000));
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
@@ -86,28 +82,29 @@ const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowed
 
 void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
     const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    rfir::checkIniKeys(c, s, allowedKeys());
-    detection.model = static_cast<rfir::models::DetectionModel>(rfir::readIniEnum(
-        c, s, "detection_model", kModelNames, static_cast<size_t>(detection.model)));
-    detection.beta = rfir::readIniDouble(c, s, "beta", detection.beta, 0.0, true);
-    detection.gaussianSigmaScale = rfir::readIniDouble(
-        c, s, "gaussian_sigma_scale", detection.gaussianSigmaScale, 0.0, true);
+    using rfir::ini::TRange;
+    const rfir::ini::CIniSection sec(c, s, allowedKeys());
+    detection.model = static_cast<rfir::models::DetectionModel>(sec.getEnum(
+        "detection_model", kModelNames, static_cast<size_t>(detection.model)));
+    detection.beta = sec.getDouble("beta", detection.beta, TRange::aboveZero(100));
+    detection.gaussianSigmaScale = sec.getDouble(
+        "gaussian_sigma_scale", detection.gaussianSigmaScale, TRange::aboveZero(100));
     rangeBearing.sigmaRange =
-        rfir::readIniDouble(c, s, "rb_sigma_range", rangeBearing.sigmaRange, 0.0, true);
+        sec.getDouble("rb_sigma_range", rangeBearing.sigmaRange, TRange::aboveZero(100));
     rangeBearing.sigmaBearing = mrpt::DEG2RAD(
-        rfir::readIniDouble(c, s, "rb_sigma_bearing_deg",
-                            mrpt::RAD2DEG(rangeBearing.sigmaBearing), 0.0, true));
-    robotUpdate = static_cast<TRobotUpdatePolicy>(rfir::readIniEnum(
-        c, s, "robot_update", kPolicyNames, static_cast<size_t>(robotUpdate)));
-    revisitMinGap = rfir::readIniPositiveInt(c, s, "revisit_min_gap", revisitMinGap);
+        sec.getDouble("rb_sigma_bearing_deg", mrpt::RAD2DEG(rangeBearing.sigmaBearing),
+                      TRange::aboveZero(180)));
+    robotUpdate = static_cast<TRobotUpdatePolicy>(
+        sec.getEnum("robot_update", kPolicyNames, static_cast<size_t>(robotUpdate)));
+    revisitMinGap =
+        size_t(sec.getInt("revisit_min_gap", int64_t(revisitMinGap), 1, 100000000));
     revisitMinTravel =
-        rfir::readIniDouble(c, s, "revisit_min_travel", revisitMinTravel, 0.0, false);
-    rbUseLandmarkCov = rfir::readIniEnum(c, s, "rb_use_landmark_cov", {"false", "true"},
-                                         rbUseLandmarkCov ? 1 : 0) == 1;
-    robotLikelihood = static_cast<TRobotLikelihood>(rfir::readIniEnum(
-        c, s, "robot_likelihood", kRobotLikNames, static_cast<size_t>(robotLikelihood)));
-    robotLikelihoodK = rfir::readIniPositiveInt(c, s, "robot_likelihood_k",
-                                                robotLikelihoodK, kMaxRobotLikelihoodK);
+        sec.getDouble("revisit_min_travel", revisitMinTravel, TRange::closed(0, 100000));
+    rbUseLandmarkCov = sec.getBool("rb_use_landmark_cov", rbUseLandmarkCov);
+    robotLikelihood = static_cast<TRobotLikelihood>(sec.getEnum(
+        "robot_likelihood", kRobotLikNames, static_cast<size_t>(robotLikelihood)));
+    robotLikelihoodK = size_t(sec.getInt("robot_likelihood_k", int64_t(robotLikelihoodK),
+                                         1, int64_t(kMaxRobotLikelihoodK)));
 }
 
 void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const {
@@ -134,10 +131,14 @@ void CRFIDTagParticleMap::TMapDefinition::loadFromConfigFile_map_specific(
     const std::string creation = prefix + "_creationOpts";
     if (source.sectionExists(creation)) {
         // MRPT reads its generic map options from the same section.
-        rfir::checkIniKeys(source, creation,
-                           {"prior_map_file", "enableSaveAs3DObject",
-                            "enableObservationLikelihood", "enableObservationInsertion"});
-        priorMapFile = source.read_string(creation, "prior_map_file", "");
+        const rfir::ini::CIniSection sec(
+            source, creation,
+            {"prior_map_file", "enableSaveAs3DObject", "enableObservationLikelihood",
+             "enableObservationInsertion"});
+        priorMapFile = sec.getString("prior_map_file", "");
+        for (const char* k : {"enableSaveAs3DObject", "enableObservationLikelihood",
+                              "enableObservationInsertion"})
+            sec.getBool(k, true);
     }
     insertionOpts.loadFromConfigFile(source, prefix + "_insertOpts");
     likelihoodOpts.loadFromConfigFile(source, prefix + "_likelihoodOpts");

@@ -6,17 +6,19 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/random/RandomGenerators.h>
 
-#include <rfir/slam/ini_check.h>
+#include <rfir/models/ini_reader.h>
 
 namespace rfir::slam {
 void TFastSLAMOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                           const std::string& s) {
-    meas.rfidStdFactor = c.read_double(s, "rfid_std_factor", meas.rfidStdFactor);
-    meas.rbStdRange = c.read_double(s, "rb_std_range", meas.rbStdRange);
-    meas.rbStdBearing = c.read_double(s, "rb_std_bearing", meas.rbStdBearing);
-    if (!(meas.rfidStdFactor > 0)) badSetting(s, "rfid_std_factor", "must be > 0");
-    if (!(meas.rbStdRange > 0)) badSetting(s, "rb_std_range", "must be > 0");
-    if (!(meas.rbStdBearing > 0)) badSetting(s, "rb_std_bearing", "must be > 0");
+    using R = rfir::ini::TRange;
+    const rfir::ini::CIniSection sec(
+        c, s, {"rfid_std_factor", "rb_std_range", "rb_std_bearing"});
+    meas.rfidStdFactor =
+        sec.getDouble("rfid_std_factor", meas.rfidStdFactor, R::aboveZero(100));
+    meas.rbStdRange = sec.getDouble("rb_std_range", meas.rbStdRange, R::aboveZero(100));
+    meas.rbStdBearing =
+        sec.getDouble("rb_std_bearing", meas.rbStdBearing, R::aboveZero(M_PI));
 }
 
 void TFastSLAMOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,

@@ -1,4 +1,4 @@
-#include <rfir/slam/ini_check.h>
+#include <rfir/models/ini_reader.h>
 #include <rfir/slam/kidnap.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -8,19 +8,22 @@
 namespace rfir::slam {
 void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                         const std::string& s) {
-    enabled = c.read_bool(s, "enabled", enabled);
-    collapse_loglik = c.read_double(s, "collapse_loglik", collapse_loglik);
-    const int k = c.read_int(s, "collapse_steps", int(collapse_steps));
-    if (k <= 0) badSetting(s, "collapse_steps", "must be a positive count");
-    collapse_steps = unsigned(k);
-    inject_fraction = c.read_double(s, "inject_fraction", inject_fraction);
-    if (!(inject_fraction > 0 && inject_fraction <= 1))
-        badSetting(s, "inject_fraction", "must be in (0, 1]");
-    keep_heading_share = c.read_double(s, "keep_heading_share", keep_heading_share);
-    if (!(keep_heading_share >= 0 && keep_heading_share <= 1))
-        badSetting(s, "keep_heading_share", "must be in [0, 1]");
-    heading_std = c.read_double(s, "heading_std", heading_std);
-    if (!(heading_std >= 0)) badSetting(s, "heading_std", "must be >= 0");
+    using R = rfir::ini::TRange;
+    const rfir::ini::CIniSection sec(
+        c, s,
+        {"enabled", "collapse_loglik", "collapse_steps", "inject_fraction",
+         "keep_heading_share", "heading_std"});
+    enabled = sec.getBool("enabled", enabled);
+    // A mean log-likelihood per detection beyond +-1000 means nothing: a
+    // density of e^1000 or a collapse on every step.
+    collapse_loglik =
+        sec.getDouble("collapse_loglik", collapse_loglik, R::closed(-1000, 1000));
+    collapse_steps =
+        unsigned(sec.getInt("collapse_steps", int64_t(collapse_steps), 1, 1000000));
+    inject_fraction = sec.getDouble("inject_fraction", inject_fraction, R::aboveZero(1));
+    keep_heading_share =
+        sec.getDouble("keep_heading_share", keep_heading_share, R::closed(0, 1));
+    heading_std = sec.getDouble("heading_std", heading_std, R::closed(0, M_PI));
 }
 
 void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,

@@ -1,18 +1,24 @@
-#include <rfir/slam/ini_check.h>
+#include <rfir/models/ini_reader.h>
 #include <rfir/slam/motion_model.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <cmath>
+
 namespace rfir::slam {
 void TMotionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                         const std::string& s) {
-    a1 = c.read_double(s, "a1", a1);
-    a2 = c.read_double(s, "a2", a2);
-    a3 = c.read_double(s, "a3", a3);
-    a4 = c.read_double(s, "a4", a4);
-    min_std_xy = c.read_double(s, "min_std_xy", min_std_xy);
-    min_std_phi = c.read_double(s, "min_std_phi", min_std_phi);
-    validate(s);
+    using R = rfir::ini::TRange;
+    const rfir::ini::CIniSection sec(
+        c, s, {"a1", "a2", "a3", "a4", "min_std_xy", "min_std_phi"});
+    // Upper bounds: 1 m of xy std per metre (or radian) and pi of heading std
+    // are already a robot that has no odometry at all.
+    a1 = sec.getDouble("a1", a1, R::closed(0, 1));
+    a2 = sec.getDouble("a2", a2, R::closed(0, 1));
+    a3 = sec.getDouble("a3", a3, R::closed(0, M_PI));
+    a4 = sec.getDouble("a4", a4, R::closed(0, M_PI));
+    min_std_xy = sec.getDouble("min_std_xy", min_std_xy, R::closed(0, 1));
+    min_std_phi = sec.getDouble("min_std_phi", min_std_phi, R::closed(0, M_PI));
 }
 
 void TMotionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -23,17 +29,6 @@ void TMotionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "a4", a4, -1, -1, "heading std [rad] per radian turned");
     c.write(s, "min_std_xy", min_std_xy, -1, -1, "xy std floor per step [m]");
     c.write(s, "min_std_phi", min_std_phi, -1, -1, "heading std floor per step [rad]");
-}
-
-void TMotionOptions::validate(const std::string& s) const {
-    const std::pair<const char*, double> vals[] = {{"a1", a1},
-                                                   {"a2", a2},
-                                                   {"a3", a3},
-                                                   {"a4", a4},
-                                                   {"min_std_xy", min_std_xy},
-                                                   {"min_std_phi", min_std_phi}};
-    for (const auto& [k, v] : vals)
-        if (!(v >= 0)) badSetting(s, k, "must be >= 0");
 }
 
 mrpt::obs::CActionRobotMovement2D::TMotionModelOptions TMotionOptions::toMRPT() const {

@@ -1,4 +1,4 @@
-#include <rfir/slam/ini_check.h>
+#include <rfir/models/ini_reader.h>
 #include <rfir/slam/slam_config.h>
 #include <rfir/slam/tagmap_engine.h>
 
@@ -15,7 +15,7 @@ namespace {
 template <class Opts>
 void loadSection(Opts& o, const mrpt::config::CConfigFileBase& ini,
                  const std::string& s) {
-    loadStrict(o, ini, s);
+    o.loadFromConfigFile(ini, s);  // each section refuses keys it does not read
 }
 }  // namespace
 
@@ -28,15 +28,12 @@ TSlamConfig loadSlamConfig(const mrpt::config::CConfigFileBase& ini,
     const std::set<std::string> mapSections = tagMapSections();
     for (const auto& s : sections)
         if (!s.empty() && !ours.count(s) && !mapSections.count(s))
-            throw std::invalid_argument("unknown section [" + s +
-                                        "] (known: slam, motion, "
-                                        "kidnap, fastslam, " +
-                                        joinSections(mapSections) + ")");
+            throw rfir::ini::CIniError(rfir::ini::fileOf(ini) + "unknown section [" + s +
+                                       "] (known: slam, motion, "
+                                       "kidnap, fastslam, " +
+                                       joinSections(mapSections) + ")");
     loadSection(c.slam, ini, "slam");
-    if (methodOverride) {
-        parseMethod(*methodOverride);
-        c.slam.method = *methodOverride;
-    }
+    if (methodOverride) c.slam.method = methodName(parseMethod(*methodOverride));
     loadSection(c.motion, ini, "motion");
     loadSection(c.kidnap, ini, "kidnap");
     loadSection(c.fastslam, ini, "fastslam");
@@ -52,7 +49,10 @@ TSlamConfig loadSlamConfigFile(const std::string& path,
     try {
         return loadSlamConfig(f, methodOverride);
     } catch (const std::exception& e) {
-        throw std::invalid_argument(path + ": " + e.what());
+        // The reader's errors already start with the file's name.
+        const std::string what = e.what();
+        if (what.rfind(path + ": ", 0) == 0) throw;
+        throw rfir::ini::CIniError(path + ": " + what);
     }
 }
 

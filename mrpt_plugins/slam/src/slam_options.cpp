@@ -1,13 +1,24 @@
-#include <rfir/slam/ini_check.h>
+#include <rfir/models/ini_reader.h>
 #include <rfir/slam/slam_options.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <algorithm>
 #include <cctype>
+#include <vector>
 
 namespace rfir::slam {
 using PF = mrpt::bayes::CParticleFilter;
+namespace {
+// In TMethod's order.
+const std::vector<std::string> kMethodNames = {"pf", "ps", "fastslam", "odometry"};
+const std::vector<std::string> kTagPoseNames = {"posterior", "predicted"};
+
+[[noreturn]] void badSetting(const std::string& s, const std::string& k,
+                             const std::string& why) {
+    throw rfir::ini::CIniError("[" + s + "] " + k + ": " + why);
+}
+}  // namespace
 
 TMethod parseMethod(const std::string& name) {
     if (name == "pf") return TMethod::PF;
@@ -60,23 +71,29 @@ std::string resamplingName(PF::TParticleResamplingAlgorithm r) {
 
 void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                       const std::string& s) {
-    method = c.read_string(s, "method", method);
-    parseMethod(method);
-    const int m = c.read_int(s, "robot_particles", int(robot_particles));
-    if (m <= 0) badSetting(s, "robot_particles", "must be a positive count");
-    robot_particles = unsigned(m);
-    resampling = c.read_string(s, "resampling", resampling);
-    resampling = resamplingName(parseResampling(resampling));
-    resample_ess = c.read_double(s, "resample_ess", resample_ess);
-    if (!(resample_ess > 0 && resample_ess <= 1))
-        badSetting(s, "resample_ess", "must be in (0, 1]");
-    start_std_xy = c.read_double(s, "start_std_xy", start_std_xy);
-    start_std_phi = c.read_double(s, "start_std_phi", start_std_phi);
-    if (!(start_std_xy >= 0)) badSetting(s, "start_std_xy", "must be >= 0");
-    if (!(start_std_phi >= 0)) badSetting(s, "start_std_phi", "must be >= 0");
-    tag_update_pose = c.read_string(s, "tag_update_pose", tag_update_pose);
-    if (tag_update_pose != "posterior" && tag_update_pose != "predicted")
-        badSetting(s, "tag_update_pose", "must be posterior or predicted");
+    using R = rfir::ini::TRange;
+    const rfir::ini::CIniSection sec(
+        c, s,
+        {"method", "robot_particles", "resampling", "resample_ess", "start_std_xy",
+         "start_std_phi", "tag_update_pose"});
+    method = methodName(
+        TMethod(sec.getEnum("method", kMethodNames, size_t(parseMethod(method)))));
+    robot_particles =
+        unsigned(sec.getInt("robot_particles", int64_t(robot_particles), 1, 1000000));
+    const std::string r = sec.getString("resampling", resampling);
+    try {
+        resampling = resamplingName(parseResampling(r));
+    } catch (const std::invalid_argument&) {
+        sec.fail("resampling", "unknown resampling scheme '" + r + "'");
+    }
+    sec.declare("resampling", "enum", resampling,
+                "multinomial, residual, stratified, systematic (also MRPT's "
+                "prMultinomial, ...)");
+    resample_ess = sec.getDouble("resample_ess", resample_ess, R::aboveZero(1));
+    start_std_xy = sec.getDouble("start_std_xy", start_std_xy, R::closed(0, 100));
+    start_std_phi = sec.getDouble("start_std_phi", start_std_phi, R::closed(0, M_PI));
+    tag_update_pose = kTagPoseNames[sec.getEnum("tag_update_pose", kTagPoseNames,
+                                                tag_update_pose == "predicted" ? 1 : 0)];
 }
 
 void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,

@@ -28,7 +28,6 @@ struct TMotionOptions : public mrpt::config::CLoadableOptions {
     void saveToConfigFile(mrpt::config::CConfigFileBase& c,
                           const std::string& s) const override;
     /** Rejects negative values, naming the key. */
-    void validate(const std::string& section) const;
     mrpt::obs::CActionRobotMovement2D::TMotionModelOptions toMRPT() const;
 };
 

@@ -31,7 +31,7 @@ for t in $TARGETS; do
   echo "[fuzz] $t: ${SECS}s"
   # New inputs go to the work corpus (first folder); the seeds stay as they are.
   if "$BUILD/bin/fuzz_$t" -max_total_time="$SECS" -rss_limit_mb=2048 -timeout=10 \
-      -print_final_stats=1 -artifact_prefix="$ROOT/$art/" \
+      -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$ROOT/$art/" \
       "$ROOT/$work" "$ROOT/fuzz/corpus/$t" >"$log" 2>&1; then
     grep -E '^stat::number_of_executed_units|^stat::average_exec_per_sec' "$log" |
       tr '\n' ' ' | sed "s/^/[fuzz] $t: /; s/\$/\n/"

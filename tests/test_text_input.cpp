@@ -173,3 +173,20 @@ TEST(TextInput, ImportProgramRefusesFiveGigabytesOfNul) {
     EXPECT_TRUE(contains(err, p + ":1: line longer than")) << err;
     EXPECT_FALSE(std::filesystem::exists(d / "out.rawlog"));
 }
+
+// Found by fuzz_mapfile: a coordinate of 1.8e114 m reached the emitter grid's
+// double -> int64 conversion (undefined behaviour).
+TEST(TextInput, EmitterFileRefusesFarCoordinates) {
+    TmpDir d;
+    const std::string p = d / "e.txt";
+    std::ofstream(p) << "emitter 1 0 0 2\nemitter 2 1" << std::string(114, '8')
+                     << " 0 2\n";
+    const auto msg = errorOf([&] { rfir::ir::TEmitterSet::load(p); });
+    EXPECT_TRUE(contains(msg, p + ":2: emitter '2': coordinates must be within")) << msg;
+    std::ofstream(p) << "emitter 1 0 0 2\nemitter 2 1000000 -1000000 2\n";
+    const auto set = rfir::ir::TEmitterSet::load(p);
+    EXPECT_EQ(set.emitters().size(), 2u);
+    // A query far outside the grid finds nothing (and converts no huge cell).
+    EXPECT_FALSE(set.nearestWithin(1e300, -1e300, 0.3));
+    EXPECT_TRUE(set.nearestWithin(0.1, 0, 0.3));
+}

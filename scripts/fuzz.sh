@@ -23,7 +23,10 @@ cmake --build "$BUILD" -j"$JOBS" --target $(printf 'fuzz_%s ' $TARGETS)
 ROOT=$(pwd)
 export LSAN_OPTIONS="suppressions=$ROOT/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="suppressions=$ROOT/tests/sanitizers/ubsan.supp:print_stacktrace=1:halt_on_error=1"
-export RFIR_FUZZ_TMP=${RFIR_FUZZ_TMP:-}
+# The harnesses' scratch files (a crashing run cannot remove its own).
+SCRATCH=$(mktemp -d "$([ -d /dev/shm ] && echo /dev/shm || echo /tmp)/rfir-fuzz.XXXXXX")
+trap 'rm -rf "$SCRATCH"' EXIT
+export RFIR_FUZZ_TMP="$SCRATCH"
 failed=()
 for t in $TARGETS; do
   work="$BUILD/corpus/$t" art="$BUILD/artifacts/$t" log="$BUILD/logs/$t.log"

@@ -28,9 +28,14 @@ std::string findProgram(const std::string& name) {
     return "";
 }
 
-/** Runs a command, stdout and stderr together. */
+/** Runs a command, stdout and stderr together. In the sanitizer build
+ * (scripts/sanitize.sh) MRPT's uninstrumented programs get the sanitizer
+ * runtimes preloaded, else they cannot load the instrumented plugin. */
 std::string run(const TmpDir& d, const std::string& cmd, int& code) {
-    const int st = std::system((cmd + " >" + d / "out.log" + " 2>&1").c_str());
+    const char* preload = std::getenv("RFIR_SANITIZER_PRELOAD");
+    const std::string env =
+        preload && *preload ? "LD_PRELOAD='" + std::string(preload) + "' " : "";
+    const int st = std::system((env + cmd + " >" + d / "out.log" + " 2>&1").c_str());
     code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
     return rfir_test::slurp(d / "out.log");
 }

@@ -4,6 +4,7 @@
 #include <rfir/common/log_convert.h>
 #include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
+#include <rfir/common/text_input.h>
 
 #include <fstream>
 #include <ostream>
@@ -15,8 +16,8 @@ namespace {
 template <class OnRecord>
 void forEachRecord(const std::string& path, const TConvertOptions& opts,
                    const std::string& what, CTextLogParser& p, OnRecord&& onRecord) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw std::runtime_error(path + ": cannot open text log");
+    std::ifstream f;
+    openTextInput(f, path, "text log");
     f.seekg(0, std::ios::end);
     const auto size = uint64_t(f.tellg());
     f.seekg(0);
@@ -26,7 +27,7 @@ void forEachRecord(const std::string& path, const TConvertOptions& opts,
     size_t n = 0;
     uint64_t done = 0;
     TTimedRecord rec;
-    while (std::getline(f, line)) {
+    while (getBoundedLine(f, line, path, n + 1)) {
         if (p.parseLine(line, ++n, rec)) onRecord(rec);
         done += line.size() + 1;
         prog.update(done - 1);

@@ -1,5 +1,6 @@
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/map_io.h>
+#include <rfir/common/text_input.h>
 
 #include <cmath>
 #include <fstream>
@@ -60,12 +61,17 @@ double num(const std::string& tok, const std::string& where, const char* what)
 
 TMapFile loadMapFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f) throw std::runtime_error(path + ": cannot open map file");
+    std::ifstream f;
+    openTextInput(f, path, "map file");
+    return loadMapFile(f, path);
+}
+
+TMapFile loadMapFile(std::istream& f, const std::string& path)
+{
     TMapFile out;
     std::set<std::pair<int, std::string>> seen;
     std::string line;
-    for (int ln = 1; std::getline(f, line); ln++)
+    for (int ln = 1; getBoundedLine(f, line, path, size_t(ln)); ln++)
     {
         const std::string where = path + ":" + std::to_string(ln);
         const auto hash = line.find('#');
@@ -111,6 +117,7 @@ TMapFile loadMapFile(const std::string& path)
                                      e.id + "'");
         out.push_back(e);
     }
+    if (f.bad()) throw std::runtime_error(path + ": read error");
     return out;
 }
 

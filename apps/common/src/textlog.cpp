@@ -1,6 +1,7 @@
 /* rfir: strict parser of the plain-text sensor log, version 1. Every rule of
  * the format is checked here; a malformed line is never skipped. */
 #include <rfir/common/map_io.h>
+#include <rfir/common/text_input.h>
 #include <rfir/common/textlog.h>
 #include <rfir/obs/ir_codes.h>
 
@@ -282,7 +283,7 @@ TTextLog readTextLog(std::istream& in, const std::string& name) {
     std::string line;
     size_t n = 0;
     TTimedRecord rec;
-    while (std::getline(in, line))
+    while (getBoundedLine(in, line, name, n + 1))
         if (p.parseLine(line, ++n, rec)) log.records.push_back(std::move(rec));
     if (in.bad()) throw std::runtime_error(name + ": read error");
     p.finish(n);
@@ -291,8 +292,8 @@ TTextLog readTextLog(std::istream& in, const std::string& name) {
 }
 
 TTextLog readTextLog(const std::string& path) {
-    std::ifstream f(path);
-    if (!f) throw std::runtime_error(path + ": cannot open text log");
+    std::ifstream f;
+    openTextInput(f, path, "text log");
     return readTextLog(f, path);
 }
 

@@ -1,4 +1,5 @@
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/text_input.h>
 #include <rfir/common/trajectory_io.h>
 
 #include <cmath>
@@ -32,11 +33,15 @@ void saveTUM(const std::string& path, const TPath2D& traj) {
 }
 
 TPath2D loadTUM(const std::string& path) {
-    std::ifstream f(path);
-    if (!f) throw std::runtime_error(path + ": cannot open TUM trajectory file");
+    std::ifstream f;
+    openTextInput(f, path, "TUM trajectory file");
+    return loadTUM(f, path);
+}
+
+TPath2D loadTUM(std::istream& f, const std::string& path) {
     TPath2D out;
     std::string line;
-    for (int ln = 1; std::getline(f, line); ln++) {
+    for (int ln = 1; getBoundedLine(f, line, path, size_t(ln)); ln++) {
         const auto hash = line.find('#');
         if (hash != std::string::npos) line.resize(hash);
         std::istringstream s(line);
@@ -64,6 +69,7 @@ TPath2D loadTUM(const std::string& path) {
         const double yaw = 2 * std::atan2(v[6], v[7]);
         out.push_back({v[0], mrpt::poses::CPose2D(v[1], v[2], yaw)});
     }
+    if (f.bad()) throw std::runtime_error(path + ": read error");
     return out;
 }
 

@@ -3,6 +3,7 @@
 
 #include <rfir/common/ini_override.h>
 #include <rfir/common/slam_run.h>
+#include <rfir/common/text_input.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/slam_inputs.h>
@@ -19,11 +20,7 @@ namespace {
 using rfir::common::TMapEntry;
 
 std::string readText(const std::string& path) {
-    std::ifstream f(path);
-    if (!f) throw std::runtime_error("cannot read '" + path + "'");
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
+    return rfir::common::readSmallTextFile(path, "INI file");
 }
 
 rfir::slam::TSlamConfig slamConfig(const std::string& dir, const TMethodSpec& m,

@@ -3,6 +3,7 @@
 
 #include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>
+#include <rfir/common/text_input.h>
 #include <rfir/models/ini_reader.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
@@ -68,16 +69,11 @@ std::string stockIniPath() {
 }
 
 void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
-    if (!std::filesystem::is_regular_file(cfg.iniPath))
+    if (!std::filesystem::exists(cfg.iniPath))
         throw std::runtime_error(cfg.iniPath + ": INI file not found");
     // A memory copy: CConfigFile would write our additions back to the file.
     mrpt::config::CConfigFileMemory c;
-    {
-        std::ifstream f(cfg.iniPath);
-        std::stringstream ss;
-        ss << f.rdbuf();
-        c.setContent(ss.str());
-    }
+    c.setContent(rfir::common::readSmallTextFile(cfg.iniPath, "INI file"));
     std::string ef;
     try {
         rfir::common::applyIniOverrides(c, cfg.overrides);

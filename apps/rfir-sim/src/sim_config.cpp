@@ -1,5 +1,6 @@
 /* rfir-sim: the run parameters and their INI sections. */
 #include <rfir/common/ini_override.h>
+#include <rfir/common/text_input.h>
 #include <rfir/sim/simulator.h>
 
 #include "ini_section.h"
@@ -184,11 +185,8 @@ void TSimConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 
 TSimConfig loadSimConfig(const std::string& iniPath,
                          const std::vector<std::string>& overrides) {
-    std::ifstream in(iniPath);
-    if (!in) throw std::runtime_error(iniPath + ": cannot open the simulation INI file");
-    std::stringstream text;
-    text << in.rdbuf();
-    mrpt::config::CConfigFileMemory f(text.str());
+    mrpt::config::CConfigFileMemory f(
+        rfir::common::readSmallTextFile(iniPath, "simulation INI file"));
     rfir::common::applyIniOverrides(f, overrides);
     static const char* kSections[] = {"simulation", "robot",        "trajectory",
                                       "kidnap",     "odometry",     "rfid",

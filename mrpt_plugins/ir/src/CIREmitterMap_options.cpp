@@ -5,6 +5,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/system/filesystem.h>
 
+#include <memory>
 #include <ostream>
 
 using namespace rfir::maps;
@@ -117,8 +118,10 @@ void CIREmitterMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& 
 mrpt::maps::CMetricMap* CIREmitterMap::internal_CreateFromMapDefinition(
     const mrpt::maps::TMetricMapInitializer& d) {
     const auto& def = dynamic_cast<const CIREmitterMap::TMapDefinition&>(d);
-    auto* m = new CIREmitterMap();
+    // Owned until returned: a bad emitter file throws (found by fuzz_ini: the
+    // map leaked).
+    auto m = std::make_unique<CIREmitterMap>();
     m->likelihoodOptions = def.likelihoodOpts;
     if (!def.emitterFile.empty()) m->loadEmitterFile(def.emitterFile);
-    return m;
+    return m.release();
 }

@@ -14,8 +14,14 @@ int64_t cellKey(int64_t ix, int64_t iy) {
     return int64_t((uint64_t(ix) << 32) ^ (uint64_t(iy) & 0xffffffffULL));
 }
 int64_t cellOf(double v) {
-    return int64_t(std::floor(v / TEmitterSet::kGridCell));
+    // Saturated: converting a double beyond int64's range is undefined (a
+    // far-off query pose must not be); keys use 32 bits per axis anyway.
+    const double c = std::floor(v / TEmitterSet::kGridCell);
+    return int64_t(std::clamp(c, -2147483648.0, 2147483647.0));
 }
+
+/** Largest |coordinate| of an emitter (m): beyond any building. */
+constexpr double kMaxEmitterCoordinate = 1e6;
 
 std::string checkId(const TEmitter& e) {
     const auto codes = codesFromEmitterId(e.id);
@@ -55,7 +61,11 @@ TEmitterSet TEmitterSet::load(const std::string& path) {
         e.y = r.y;
         e.z = r.z;
         if (const auto c = codesFromEmitterId(r.id)) e.codes = *c;
-        const std::string err = checkId(e);
+        std::string err = checkId(e);
+        if (err.empty() && !(std::abs(e.x) <= kMaxEmitterCoordinate &&
+                             std::abs(e.y) <= kMaxEmitterCoordinate &&
+                             std::abs(e.z) <= kMaxEmitterCoordinate))
+            err = "emitter '" + e.id + "': coordinates must be within +-1e6 m";
         if (!err.empty())
             throw std::runtime_error(path + ":" + std::to_string(r.line) + ": " + err);
         em.push_back(e);

@@ -6,6 +6,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/filesystem.h>
 
+#include <filesystem>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -45,6 +46,14 @@ TSlamConfig loadSlamConfigFile(const std::string& path,
                                const std::optional<std::string>& methodOverride) {
     if (!mrpt::system::fileExists(path))
         throw std::invalid_argument("cannot read INI file '" + path + "'");
+    // CConfigFile reads any file whole: refuse a directory, a device or a
+    // file far larger than any INI (rfir::common::kMaxIniFileBytes).
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw std::invalid_argument(path + ": not a regular file (INI file)");
+    if (std::filesystem::file_size(path, ec) > (uint64_t(16) << 20))
+        throw std::invalid_argument(path +
+                                    ": over the 16777216-byte limit of an INI file");
     mrpt::config::CConfigFile f(path);
     try {
         return loadSlamConfig(f, methodOverride);

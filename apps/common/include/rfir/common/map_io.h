@@ -4,6 +4,7 @@
 
 #include <rfir/obs/ir_lattice.h>
 
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ void saveMapFile(const std::string& path, const TMapFile& m,
  * on a malformed line, an unknown record, a bad ID or a duplicate ID of one kind
  * (except repeated-ID emitters, IDs 1..9, which recur by design). */
 TMapFile loadMapFile(const std::string& path);
+/** Same from a stream; `name` is used in messages. */
+TMapFile loadMapFile(std::istream& in, const std::string& name);
 
 /** `emitter` records of emitters (id, x, y, z), in their order. */
 TMapFile emitterEntries(const std::vector<rfir::ir::TEmitter>& emitters);

@@ -4,6 +4,7 @@
 
 #include <mrpt/poses/CPose2D.h>
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -28,5 +29,7 @@ void saveTUM(const std::string& path, const TPath2D& traj);
 /** Reads a TUM file; `#` comments and blank lines skipped. Throws
  * std::runtime_error("FILE:LINE: what is wrong") on a malformed line. */
 TPath2D loadTUM(const std::string& path);
+/** Same from a stream; `name` is used in messages. */
+TPath2D loadTUM(std::istream& in, const std::string& name);
 
 }  // namespace rfir::common

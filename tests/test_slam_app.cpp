@@ -208,11 +208,12 @@ TEST(SlamApp, OutputsBelongToOneRun) {
     EXPECT_NE(stats.find("\"seed\": 2"), std::string::npos) << stats;
     EXPECT_NE(stats.find("\"ini_md5\": \""), std::string::npos) << stats;
     EXPECT_NE(stats.find("--seed 2"), std::string::npos) << stats;
-    EXPECT_NE(stats.find("\"files\": [\"errors.json\", \"map.txt\", \"path.tum\", "
-                         "\"path_map.png\", \"settings.ini\", \"stats.json\"]"),
+    EXPECT_NE(stats.find("\"files\": [\"error_time.png\", \"errors.json\", \"map.txt\", "
+                         "\"path.tum\", \"path_map.png\", \"scene.3Dscene\", "
+                         "\"settings.ini\", \"stats.json\"]"),
               std::string::npos)
         << stats;
-    EXPECT_NE(slurp(out + "/settings.ini").find("# files: errors.json map.txt"),
+    EXPECT_NE(slurp(out + "/settings.ini").find("# files: error_time.png errors.json map.txt"),
               std::string::npos);
 
     // A failing run (bad INI value) leaves the seed-2 set byte for byte.

@@ -213,8 +213,9 @@ TEST(SlamApp, OutputsBelongToOneRun) {
                          "\"settings.ini\", \"stats.json\"]"),
               std::string::npos)
         << stats;
-    EXPECT_NE(slurp(out + "/settings.ini").find("# files: error_time.png errors.json map.txt"),
-              std::string::npos);
+    EXPECT_NE(
+        slurp(out + "/settings.ini").find("# files: error_time.png errors.json map.txt"),
+        std::string::npos);
 
     // A failing run (bad INI value) leaves the seed-2 set byte for byte.
     const std::string before = slurp(out + "/path.tum");

@@ -9,20 +9,19 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace rfir::common
-{
-const char* kindName(TMapEntry::Kind k)
-{
-    switch (k)
-    {
-        case TMapEntry::Kind::Tag: return "tag";
-        case TMapEntry::Kind::Emitter: return "emitter";
-        default: return "landmark";
+namespace rfir::common {
+const char* kindName(TMapEntry::Kind k) {
+    switch (k) {
+        case TMapEntry::Kind::Tag:
+            return "tag";
+        case TMapEntry::Kind::Emitter:
+            return "emitter";
+        default:
+            return "landmark";
     }
 }
 
-bool isValidId(const std::string& id)
-{
+bool isValidId(const std::string& id) {
     if (id.empty() || id.size() > 64) return false;
     for (char c : id)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' ||
@@ -31,13 +30,11 @@ bool isValidId(const std::string& id)
     return true;
 }
 
-void saveMapFile(const std::string& path, const TMapFile& m, const std::string& hdr)
-{
+void saveMapFile(const std::string& path, const TMapFile& m, const std::string& hdr) {
     writeFileAtomically(path, [&](std::ostream& o) {
         if (!hdr.empty()) o << "# " << hdr << "\n";
         o << std::fixed << std::setprecision(6);
-        for (const auto& e : m)
-        {
+        for (const auto& e : m) {
             o << kindName(e.kind) << " " << e.id << " " << e.x << " " << e.y;
             if (e.kind == TMapEntry::Kind::Emitter) o << " " << e.z;
             if (e.sx && e.sy) o << " " << *e.sx << " " << *e.sy;
@@ -46,10 +43,8 @@ void saveMapFile(const std::string& path, const TMapFile& m, const std::string& 
     });
 }
 
-namespace
-{
-double num(const std::string& tok, const std::string& where, const char* what)
-{
+namespace {
+double num(const std::string& tok, const std::string& where, const char* what) {
     char* end = nullptr;
     const double v = std::strtod(tok.c_str(), &end);
     if (tok.empty() || *end || !std::isfinite(v))
@@ -59,20 +54,17 @@ double num(const std::string& tok, const std::string& where, const char* what)
 }
 }  // namespace
 
-TMapFile loadMapFile(const std::string& path)
-{
+TMapFile loadMapFile(const std::string& path) {
     std::ifstream f;
     openTextInput(f, path, "map file");
     return loadMapFile(f, path);
 }
 
-TMapFile loadMapFile(std::istream& f, const std::string& path)
-{
+TMapFile loadMapFile(std::istream& f, const std::string& path) {
     TMapFile out;
     std::set<std::pair<int, std::string>> seen;
     std::string line;
-    for (int ln = 1; getBoundedLine(f, line, path, size_t(ln)); ln++)
-    {
+    for (int ln = 1; getBoundedLine(f, line, path, size_t(ln)); ln++) {
         const std::string where = path + ":" + std::to_string(ln);
         const auto hash = line.find('#');
         if (hash != std::string::npos) line.resize(hash);
@@ -82,17 +74,21 @@ TMapFile loadMapFile(std::istream& f, const std::string& path)
         if (t.empty()) continue;
         TMapEntry e;
         size_t nCoords = 2;
-        if (t[0] == "tag") e.kind = TMapEntry::Kind::Tag;
-        else if (t[0] == "landmark") e.kind = TMapEntry::Kind::Landmark;
-        else if (t[0] == "emitter") { e.kind = TMapEntry::Kind::Emitter; nCoords = 3; }
-        else throw std::runtime_error(where + ": unknown record '" + t[0] +
-                                      "' (expected tag, emitter or landmark)");
+        if (t[0] == "tag")
+            e.kind = TMapEntry::Kind::Tag;
+        else if (t[0] == "landmark")
+            e.kind = TMapEntry::Kind::Landmark;
+        else if (t[0] == "emitter") {
+            e.kind = TMapEntry::Kind::Emitter;
+            nCoords = 3;
+        } else
+            throw std::runtime_error(where + ": unknown record '" + t[0] +
+                                     "' (expected tag, emitter or landmark)");
         if (t.size() != 2 + nCoords && t.size() != 4 + nCoords)
-            throw std::runtime_error(where + ": '" + t[0] + "' takes " +
-                                     std::to_string(1 + nCoords) + " fields (id and " +
-                                     (nCoords == 3 ? "x y z" : "x y") +
-                                     "), optionally followed by sx sy; got " +
-                                     std::to_string(t.size() - 1));
+            throw std::runtime_error(
+                where + ": '" + t[0] + "' takes " + std::to_string(1 + nCoords) +
+                " fields (id and " + (nCoords == 3 ? "x y z" : "x y") +
+                "), optionally followed by sx sy; got " + std::to_string(t.size() - 1));
         if (!isValidId(t[1]))
             throw std::runtime_error(where + ": invalid ID '" + t[1] +
                                      "' (1-64 characters of [A-Za-z0-9_.:-])");
@@ -100,8 +96,7 @@ TMapFile loadMapFile(std::istream& f, const std::string& path)
         e.x = num(t[2], where, "x");
         e.y = num(t[3], where, "y");
         if (nCoords == 3) e.z = num(t[4], where, "z");
-        if (t.size() == 4 + nCoords)
-        {
+        if (t.size() == 4 + nCoords) {
             e.sx = num(t[2 + nCoords], where, "sx");
             e.sy = num(t[3 + nCoords], where, "sy");
             if (*e.sx < 0 || *e.sy < 0)
@@ -113,19 +108,17 @@ TMapFile loadMapFile(std::istream& f, const std::string& path)
         const bool repeatedEmitter = e.kind == TMapEntry::Kind::Emitter &&
                                      e.id.size() == 1 && e.id[0] >= '1' && e.id[0] <= '9';
         if (!repeatedEmitter && !seen.insert({int(e.kind), e.id}).second)
-            throw std::runtime_error(where + ": duplicate " + std::string(t[0]) + " ID '" +
-                                     e.id + "'");
+            throw std::runtime_error(where + ": duplicate " + std::string(t[0]) +
+                                     " ID '" + e.id + "'");
         out.push_back(e);
     }
     if (f.bad()) throw std::runtime_error(path + ": read error");
     return out;
 }
 
-TMapFile emitterEntries(const std::vector<rfir::ir::TEmitter>& emitters)
-{
+TMapFile emitterEntries(const std::vector<rfir::ir::TEmitter>& emitters) {
     TMapFile f;
-    for (const auto& e : emitters)
-    {
+    for (const auto& e : emitters) {
         TMapEntry m;
         m.kind = TMapEntry::Kind::Emitter;
         m.id = e.id;

@@ -13,25 +13,20 @@
 #include <iostream>
 #include <stdexcept>
 
-namespace rfir::common
-{
+namespace rfir::common {
 using namespace mrpt::obs;
 
-namespace
-{
+namespace {
 /** A gz stream only reports EOF after a read has failed, so the reader takes
  * one byte to tell "no more objects" from "object cut short", then hands that
  * byte back to the archive through this wrapper. */
-class CPushbackStream : public mrpt::io::CStream, public rfir::obs::IBytesLeft
-{
-public:
+class CPushbackStream : public mrpt::io::CStream, public rfir::obs::IBytesLeft {
+  public:
     CPushbackStream(CGzInputStream& s, uint8_t first) : s_(s), first_(first) {}
-    size_t Read(void* buf, size_t n) override
-    {
+    size_t Read(void* buf, size_t n) override {
         if (n == 0) return 0;
         size_t k = 0;
-        if (pending_)
-        {
+        if (pending_) {
             *static_cast<uint8_t*>(buf) = first_;
             pending_ = false;
             k = 1;
@@ -39,19 +34,21 @@ public:
         return k + s_.Read(static_cast<uint8_t*>(buf) + k, n - k);
     }
     size_t Write(const void*, size_t) override { return 0; }
-    uint64_t Seek(int64_t, mrpt::io::CStream::TSeekOrigin) override
-    {
+    uint64_t Seek(int64_t, mrpt::io::CStream::TSeekOrigin) override {
         throw std::logic_error("CPushbackStream: no seek");
     }
     uint64_t getTotalBytesCount() const override { return s_.getTotalBytesCount(); }
-    uint64_t getPosition() const override { return s_.getPosition() - (pending_ ? 1 : 0); }
-    std::string getStreamDescription() const override { return s_.getStreamDescription(); }
-    std::optional<uint64_t> bytesLeft() const override
-    {
+    uint64_t getPosition() const override {
+        return s_.getPosition() - (pending_ ? 1 : 0);
+    }
+    std::string getStreamDescription() const override {
+        return s_.getStreamDescription();
+    }
+    std::optional<uint64_t> bytesLeft() const override {
         return *s_.bytesLeft() + (pending_ ? 1 : 0);
     }
 
-private:
+  private:
     CGzInputStream& s_;
     uint8_t first_;
     bool pending_ = true;
@@ -59,10 +56,10 @@ private:
 /** MRPT wraps an error once per nesting level ("==== MRPT exception ====",
  * "Message: ...", "Original exception: ..."); the innermost one says what is
  * wrong, so that is the one reported. */
-std::string innermostError(std::string msg)
-{
+std::string innermostError(std::string msg) {
     const std::string orig = "Original exception:";
-    if (const auto k = msg.rfind(orig); k != std::string::npos) msg = msg.substr(k + orig.size());
+    if (const auto k = msg.rfind(orig); k != std::string::npos)
+        msg = msg.substr(k + orig.size());
     const std::string head = "Message:";
     if (msg.find("==== MRPT exception ====") != std::string::npos)
         if (const auto k = msg.find(head); k != std::string::npos)
@@ -76,8 +73,7 @@ std::string innermostError(std::string msg)
 CRawlogWriter::CRawlogWriter(const std::string& path,
                              const rfir::obs::CObservationLogHeader& hdr,
                              const CActionRobotMovement2D::TMotionModelOptions& motion)
-    : path_(path), tmp_(path + ".tmp." + std::to_string(::getpid())), motion_(motion)
-{
+    : path_(path), tmp_(path + ".tmp." + std::to_string(::getpid())), motion_(motion) {
     rfir::obs::registerAllClasses();
     out_ = std::make_unique<mrpt::io::CFileGZOutputStream>();
     if (!out_->open(tmp_))
@@ -94,26 +90,22 @@ CRawlogWriter::CRawlogWriter(const std::string& path,
     ar << acts << sf;
 }
 
-CActionRobotMovement2D CRawlogWriter::zeroMovement(mrpt::Clock::time_point ts) const
-{
+CActionRobotMovement2D CRawlogWriter::zeroMovement(mrpt::Clock::time_point ts) const {
     CActionRobotMovement2D mv;
     mv.timestamp = ts;
     mv.computeFromOdometry(mrpt::poses::CPose2D(), motion_);
     return mv;
 }
 
-CRawlogWriter::~CRawlogWriter()
-{
-    if (out_)
-    {
+CRawlogWriter::~CRawlogWriter() {
+    if (out_) {
         out_->close();
         std::remove(tmp_.c_str());
     }
 }
 
 void CRawlogWriter::writeStep(double t, const std::optional<mrpt::poses::CPose2D>& odom,
-                              const std::vector<CObservation::Ptr>& obs)
-{
+                              const std::vector<CObservation::Ptr>& obs) {
     if (!out_) throw std::logic_error("CRawlogWriter: write after close");
     const auto ts = mrpt::Clock::fromDouble(t);
     CActionCollection acts;
@@ -121,8 +113,7 @@ void CRawlogWriter::writeStep(double t, const std::optional<mrpt::poses::CPose2D
     // Without odometry the robot is taken as not moved: a zero movement,
     // which the reader tells from a real one by the missing odometry record.
     if (!odom) acts.insert(zeroMovement(ts));
-    if (odom)
-    {
+    if (odom) {
         CActionRobotMovement2D mv;
         mv.timestamp = ts;
         // The first odometry record only anchors the odometry frame.
@@ -136,8 +127,7 @@ void CRawlogWriter::writeStep(double t, const std::optional<mrpt::poses::CPose2D
         sf.insert(o);
         lastOdom_ = odom;
     }
-    for (const auto& o : obs)
-    {
+    for (const auto& o : obs) {
         o->timestamp = ts;
         sf.insert(o);
     }
@@ -146,34 +136,28 @@ void CRawlogWriter::writeStep(double t, const std::optional<mrpt::poses::CPose2D
     steps_++;
 }
 
-void CRawlogWriter::close()
-{
+void CRawlogWriter::close() {
     if (!out_) return;
     out_->close();
     out_.reset();
-    if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    {
+    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
         std::remove(tmp_.c_str());
         throw std::runtime_error("cannot write '" + path_ + "' (rename failed)");
     }
 }
 
-CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
-{
+CRawlogReader::CRawlogReader(const std::string& path) : path_(path) {
     rfir::obs::registerAllClasses();
     in_.open(path);  // throws "PATH: is a directory" / "no such file" / ...
     auto a = readObject();
-    if (auto o = std::dynamic_pointer_cast<CObservation>(a))
-    {
+    if (auto o = std::dynamic_pointer_cast<CObservation>(a)) {
         // MRPT's observation-only layout: a flat sequence of observations.
         obsOnly_ = true;
         if (auto h = std::dynamic_pointer_cast<rfir::obs::CObservationLogHeader>(o))
             header_ = h;
         else
             pendingObs_ = o;
-    }
-    else
-    {
+    } else {
         auto s = readObject();
         auto acts = std::dynamic_pointer_cast<CActionCollection>(a);
         auto sf = std::dynamic_pointer_cast<CSensoryFrame>(s);
@@ -187,8 +171,7 @@ CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
         else
             pending_ = std::make_pair(acts, sf);
     }
-    if (!header_)
-    {
+    if (!header_) {
         hasHeader_ = false;
         std::cerr << "warning: " << path
                   << ": no rfir log header (a rawlog cut by rawlog-edit, or not written "
@@ -198,14 +181,11 @@ CRawlogReader::CRawlogReader(const std::string& path) : path_(path)
     }
 }
 
-mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject()
-{
+mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject() {
     entry_++;  // a stream cut between two objects fails in the next entry
-    try
-    {
+    try {
         uint8_t first = 0;
-        if (in_.Read(&first, 1) != 1)
-        {
+        if (in_.Read(&first, 1) != 1) {
             entry_--;
             return {};  // the end, between two objects
         }
@@ -214,21 +194,18 @@ mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject()
         rfir::obs::CBytesLeftScope scope(&s);
         auto ar = mrpt::serialization::archiveFrom(s);
         return ar.ReadObject();
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         std::string msg = innermostError(e.what());
         if (msg.size() > 300) msg = msg.substr(0, 300) + "...";
         throw std::runtime_error(path_ + ": entry " + std::to_string(entry_) +
                                  ": cannot read object (corrupt file, or a class not "
-                                 "registered): " + msg);
+                                 "registered): " +
+                                 msg);
     }
 }
 
-bool CRawlogReader::nextPair(CActionCollection::Ptr& acts, CSensoryFrame::Ptr& sf)
-{
-    if (pending_)
-    {
+bool CRawlogReader::nextPair(CActionCollection::Ptr& acts, CSensoryFrame::Ptr& sf) {
+    if (pending_) {
         std::tie(acts, sf) = *pending_;
         pending_.reset();
         return true;
@@ -244,16 +221,13 @@ bool CRawlogReader::nextPair(CActionCollection::Ptr& acts, CSensoryFrame::Ptr& s
     return true;
 }
 
-bool CRawlogReader::nextFlatInstant(CSensoryFrame::Ptr& sf)
-{
+bool CRawlogReader::nextFlatInstant(CSensoryFrame::Ptr& sf) {
     // One instant = the consecutive observations with the same timestamp.
     sf = std::make_shared<CSensoryFrame>();
-    for (;;)
-    {
+    for (;;) {
         CObservation::Ptr o = pendingObs_;
         pendingObs_.reset();
-        if (!o)
-        {
+        if (!o) {
             auto x = readObject();
             if (!x) break;
             o = std::dynamic_pointer_cast<CObservation>(x);
@@ -263,8 +237,7 @@ bool CRawlogReader::nextFlatInstant(CSensoryFrame::Ptr& sf)
                     x->GetRuntimeClass()->className +
                     " in an observation-only rawlog (layouts cannot be mixed)");
         }
-        if (sf->size() > 0 && o->timestamp != (*sf->begin())->timestamp)
-        {
+        if (sf->size() > 0 && o->timestamp != (*sf->begin())->timestamp) {
             pendingObs_ = o;
             break;
         }
@@ -273,18 +246,15 @@ bool CRawlogReader::nextFlatInstant(CSensoryFrame::Ptr& sf)
     return sf->size() > 0;
 }
 
-namespace
-{
+namespace {
 /** Reader ID of an MRPT CObservationRFID antenna (docs/rawlog-layout.md). */
-std::string mrptReaderId(const CObservationRFID& o, const std::string& port)
-{
+std::string mrptReaderId(const CObservationRFID& o, const std::string& port) {
     return port.empty() ? o.sensorLabel : o.sensorLabel + "." + port;
 }
 }  // namespace
 
 rfir::obs::TRFIDReader CRawlogReader::readerOf(const CObservationRFID& o,
-                                               const std::string& id)
-{
+                                               const std::string& id) {
     for (const auto& r : header_->readers)
         if (r.id == id) return r;
     rfir::obs::TRFIDReader r;
@@ -300,13 +270,11 @@ rfir::obs::TRFIDReader CRawlogReader::readerOf(const CObservationRFID& o,
     return r;
 }
 
-void CRawlogReader::addMrptRFID(TRawlogStep& st, const CObservationRFID& o)
-{
+void CRawlogReader::addMrptRFID(TRawlogStep& st, const CObservationRFID& o) {
     // Copy-on-write: st.rfid may be an observation of the frame itself.
     auto r = st.rfid ? std::make_shared<rfir::obs::CObservationRFIDReaders>(*st.rfid)
                      : rfir::obs::CObservationRFIDReaders::Create();
-    if (!st.rfid)
-    {
+    if (!st.rfid) {
         r->timestamp = o.timestamp;
         r->sensorLabel = "RFID";
     }
@@ -318,8 +286,7 @@ void CRawlogReader::addMrptRFID(TRawlogStep& st, const CObservationRFID& o)
     };
     // An antenna polled with nothing read: the label alone (no port known).
     if (o.tag_readings.empty()) reading(mrptReaderId(o, ""));
-    for (const auto& tr : o.tag_readings)
-    {
+    for (const auto& tr : o.tag_readings) {
         auto& x = reading(mrptReaderId(o, tr.antennaPort));
         if (std::find(x.tags.begin(), x.tags.end(), tr.epc) == x.tags.end())
             x.tags.push_back(tr.epc);
@@ -327,38 +294,40 @@ void CRawlogReader::addMrptRFID(TRawlogStep& st, const CObservationRFID& o)
     st.rfid = r;
 }
 
-bool CRawlogReader::next(TRawlogStep& st)
-{
+bool CRawlogReader::next(TRawlogStep& st) {
     CActionCollection::Ptr acts;
     CSensoryFrame::Ptr sf;
-    if (obsOnly_)
-    {
+    if (obsOnly_) {
         if (!nextFlatInstant(sf)) return false;
         acts = std::make_shared<CActionCollection>();
-    }
-    else if (!nextPair(acts, sf))
+    } else if (!nextPair(acts, sf))
         return false;
     st = TRawlogStep();
     st.index = steps_++;
     st.action = acts;
     st.sf = sf;
     bool haveT = false;
-    for (const auto& o : *sf)
-    {
-        if (!haveT) { st.t = mrpt::Clock::toDouble(o->timestamp); haveT = true; }
-        if (auto od = std::dynamic_pointer_cast<CObservationOdometry>(o)) st.odometry = od->odometry;
-        else if (auto r = std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o)) st.rfid = r;
-        else if (auto i = std::dynamic_pointer_cast<rfir::obs::CObservationIRSignals>(o)) st.ir = i;
-        else if (auto b = std::dynamic_pointer_cast<CObservationBearingRange>(o)) st.rb = b;
+    for (const auto& o : *sf) {
+        if (!haveT) {
+            st.t = mrpt::Clock::toDouble(o->timestamp);
+            haveT = true;
+        }
+        if (auto od = std::dynamic_pointer_cast<CObservationOdometry>(o))
+            st.odometry = od->odometry;
+        else if (auto r =
+                     std::dynamic_pointer_cast<rfir::obs::CObservationRFIDReaders>(o))
+            st.rfid = r;
+        else if (auto i = std::dynamic_pointer_cast<rfir::obs::CObservationIRSignals>(o))
+            st.ir = i;
+        else if (auto b = std::dynamic_pointer_cast<CObservationBearingRange>(o))
+            st.rb = b;
     }
     for (const auto& o : *sf)
         if (auto m = std::dynamic_pointer_cast<CObservationRFID>(o)) addMrptRFID(st, *m);
-    if (obsOnly_)
-    {
+    if (obsOnly_) {
         // Increments between absolute odometry poses; the first only anchors
         // the frame (as rfir::slam::inputsFromSteps and the writer do).
-        if (st.odometry)
-        {
+        if (st.odometry) {
             if (lastOdometry_) st.odometryIncrement = *st.odometry - *lastOdometry_;
             lastOdometry_ = st.odometry;
         }
@@ -371,8 +340,7 @@ bool CRawlogReader::next(TRawlogStep& st)
     // rawlog) is kept.
     const bool anchor = st.odometry && !sawOdometry_;
     if (st.odometry) sawOdometry_ = true;
-    if (auto mv = acts->getBestMovementEstimation())
-    {
+    if (auto mv = acts->getBestMovementEstimation()) {
         const auto& inc = mv->rawOdometryIncrementReading;
         const bool zero = inc.x() == 0 && inc.y() == 0 && inc.phi() == 0;
         if (!zero || (st.odometry && !anchor)) st.odometryIncrement = inc;

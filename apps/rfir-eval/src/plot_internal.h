@@ -65,7 +65,17 @@ void drawStartMark(CImage& img, int x, int y, TColor c);
 void drawEndMark(CImage& img, int x, int y, TColor c);
 
 struct TLegendEntry {
-    enum Style { Line, DashedLine, LineDot, Dot, Circle, Square, StartMark, EndMark, Arrow };
+    enum Style {
+        Line,
+        DashedLine,
+        LineDot,
+        Dot,
+        Circle,
+        Square,
+        StartMark,
+        EndMark,
+        Arrow
+    };
     std::string label;
     TColor color;
     Style style = Line;

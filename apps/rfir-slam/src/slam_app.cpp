@@ -169,10 +169,9 @@ std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSla
     return o.str();
 }
 
-const std::vector<std::string> kOutputPatterns = {"path*.tum",     "map*.txt",
-                                                  "path_map*.png", "errors*.json",
-                                                  "scene*.3Dscene", "error_time*.png",
-                                                  "settings.ini",  "stats.json"};
+const std::vector<std::string> kOutputPatterns = {
+    "path*.tum",      "map*.txt",        "path_map*.png", "errors*.json",
+    "scene*.3Dscene", "error_time*.png", "settings.ini",  "stats.json"};
 
 /** settings.ini and stats.json, last: they name the run and every file it wrote. */
 void writeSettingsAndStats(rfir::common::COutputFolder& out,
@@ -280,8 +279,8 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
     logStream(a) << "rfir-slam: smoothed in " << res.iterations << " iterations ("
                  << res.reads << " reads; cost " << res.initialCost << " -> "
                  << res.finalCost << ")\n";
-    return writeAndScore(a, out, truth, res.run, "_smoothed", cfg.slam.method + " smoothed",
-                         "<tag> <id> <x> <y> <sx> <sy>");
+    return writeAndScore(a, out, truth, res.run, "_smoothed",
+                         cfg.slam.method + " smoothed", "<tag> <id> <x> <y> <sx> <sy>");
 }
 }  // namespace
 

@@ -9,14 +9,12 @@
 #include <string>
 #include <vector>
 
-namespace rfir::common
-{
-struct TMapEntry
-{
+namespace rfir::common {
+struct TMapEntry {
     enum class Kind { Tag, Emitter, Landmark };
     Kind kind = Kind::Tag;
     std::string id;
-    double x = 0, y = 0, z = 0;  //!< z only for emitters
+    double x = 0, y = 0, z = 0;    //!< z only for emitters
     std::optional<double> sx, sy;  //!< standard deviations (estimated maps)
     int line = 0;  //!< line in the file it was read from (0: not read from a file)
 };

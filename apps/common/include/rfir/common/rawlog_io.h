@@ -21,17 +21,16 @@
 #include <string>
 #include <vector>
 
-namespace rfir::common
-{
+namespace rfir::common {
 /** Streams a rawlog to "<path>.tmp.<pid>"; close() renames it to `path`, so a
  * failed run leaves no half-written file. */
-class CRawlogWriter
-{
-public:
+class CRawlogWriter {
+  public:
     /** Writes the header pair at once. `motion` sets the Gaussian odometry model
      * stored in each CActionRobotMovement2D (SLAM apps use their own INI model). */
-    CRawlogWriter(const std::string& path, const rfir::obs::CObservationLogHeader& hdr,
-                  const mrpt::obs::CActionRobotMovement2D::TMotionModelOptions& motion = {});
+    CRawlogWriter(
+        const std::string& path, const rfir::obs::CObservationLogHeader& hdr,
+        const mrpt::obs::CActionRobotMovement2D::TMotionModelOptions& motion = {});
     ~CRawlogWriter();
     CRawlogWriter(const CRawlogWriter&) = delete;
     CRawlogWriter& operator=(const CRawlogWriter&) = delete;
@@ -43,7 +42,7 @@ public:
     void close();
     size_t stepsWritten() const { return steps_; }
 
-private:
+  private:
     mrpt::obs::CActionRobotMovement2D zeroMovement(mrpt::Clock::time_point ts) const;
     std::string path_, tmp_;
     std::unique_ptr<mrpt::io::CFileGZOutputStream> out_;
@@ -53,8 +52,7 @@ private:
 };
 
 /** One sensing instant read back. */
-struct TRawlogStep
-{
+struct TRawlogStep {
     double t = 0;
     size_t index = 0;  //!< 0-based instant index (header excluded)
     mrpt::obs::CActionCollection::Ptr action;  //!< may hold no movement
@@ -75,9 +73,8 @@ struct TRawlogStep
  * MRPT's CObservationRFID is read into `rfid` (docs/rawlog-layout.md). Unlike
  * CRawlog's helpers it never swallows an error: a corrupt entry or an
  * unregistered class throws std::runtime_error naming the file and entry. */
-class CRawlogReader
-{
-public:
+class CRawlogReader {
+  public:
     explicit CRawlogReader(const std::string& path);
     /** The log header (an empty one, with a warning on stderr, when the rawlog
      * was not written by this project). */
@@ -88,9 +85,10 @@ public:
     bool next(TRawlogStep& step);
     const std::string& path() const { return path_; }
 
-private:
+  private:
     mrpt::serialization::CSerializable::Ptr readObject();
-    bool nextPair(mrpt::obs::CActionCollection::Ptr& acts, mrpt::obs::CSensoryFrame::Ptr& sf);
+    bool nextPair(mrpt::obs::CActionCollection::Ptr& acts,
+                  mrpt::obs::CSensoryFrame::Ptr& sf);
     bool nextFlatInstant(mrpt::obs::CSensoryFrame::Ptr& sf);
     void addMrptRFID(TRawlogStep& st, const mrpt::obs::CObservationRFID& o);
     rfir::obs::TRFIDReader readerOf(const mrpt::obs::CObservationRFID& o,
@@ -102,9 +100,10 @@ private:
     bool obsOnly_ = false;      //!< MRPT's observation-only layout
     bool hasHeader_ = true;
     rfir::obs::CObservationLogHeader::Ptr header_;
-    std::optional<std::pair<mrpt::obs::CActionCollection::Ptr, mrpt::obs::CSensoryFrame::Ptr>>
+    std::optional<
+        std::pair<mrpt::obs::CActionCollection::Ptr, mrpt::obs::CSensoryFrame::Ptr>>
         pending_;
-    mrpt::obs::CObservation::Ptr pendingObs_;  //!< observation-only: read ahead
+    mrpt::obs::CObservation::Ptr pendingObs_;           //!< observation-only: read ahead
     std::optional<mrpt::poses::CPose2D> lastOdometry_;  //!< observation-only
     std::set<std::string> warnedReaders_;
 };

@@ -129,8 +129,9 @@ void expectCleanFailure(const std::string& prog, const std::string& rawlog,
     EXPECT_TRUE(r.exited) << what << "\nsignal " << r.signal;
     EXPECT_NE(r.code, 0) << what;
     EXPECT_NE(r.output.find(rawlog), std::string::npos) << what;
-    if (!alsoInMessage.empty())
+    if (!alsoInMessage.empty()) {
         EXPECT_NE(r.output.find(alsoInMessage), std::string::npos) << what;
+    }
 }
 }  // namespace
 

@@ -10,7 +10,7 @@
 namespace rfir::sim::detail
 {
 COdometrySimulator::COdometrySimulator(const TOdometryNoise& n,
-                                       mrpt::random::CRandomGenerator& rng)
+                                       rfir::models::TRandom& rng)
     : n_(n), rng_(rng)
 {
     s_ = rng_.drawGaussian1D(0, n_.scaleSigma);

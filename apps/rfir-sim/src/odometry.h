@@ -5,15 +5,14 @@
 
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
-namespace rfir::sim::detail
-{
+namespace rfir::sim::detail {
 /** Corrupts true increments with the TOdometryNoise model: per-run biases are
  * drawn at construction, per-step Gaussian noise on each call. */
-class COdometrySimulator
-{
-public:
-    COdometrySimulator(const TOdometryNoise& n, mrpt::random::CRandomGenerator& rng);
+class COdometrySimulator {
+  public:
+    COdometrySimulator(const TOdometryNoise& n, rfir::models::TRandom& rng);
     /** The increment (robot frame) the odometry reports for a true one. A zero
      * increment (robot standing or carried) stays exactly zero. */
     mrpt::poses::CPose2D noisyIncrement(const mrpt::poses::CPose2D& trueInc);
@@ -21,9 +20,9 @@ public:
     double rotScaleBias() const { return r_; }
     double headingDrift() const { return h_; }
 
-private:
+  private:
     TOdometryNoise n_;
-    mrpt::random::CRandomGenerator& rng_;
+    rfir::models::TRandom& rng_;
     double s_ = 0, r_ = 0, h_ = 0;
 };
 }  // namespace rfir::sim::detail

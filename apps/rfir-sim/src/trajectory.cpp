@@ -39,7 +39,7 @@ double wrapToPi(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
 std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, double y0,
                                         double x1, double y1,
-                                        mrpt::random::CRandomGenerator& rng)
+                                        rfir::models::TRandom& rng)
 {
     std::vector<TPoseU> w;
     if (t.kind == TTrajectoryConfig::Kind::Random)
@@ -65,7 +65,7 @@ std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, d
     return w;
 }
 
-CPlan::CPlan(const TSimConfig& cfg, mrpt::random::CRandomGenerator& rng)
+CPlan::CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng)
 {
     const auto& tc = cfg.trajectory;
     const double m = tc.margin;

@@ -10,21 +10,19 @@
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <string>
 #include <unordered_map>
 #include <vector>
 
-namespace rfir::sim::detail
-{
-struct TPoint
-{
+namespace rfir::sim::detail {
+struct TPoint {
     std::string id;
     double x = 0, y = 0;
 };
 
-struct TWorld
-{
+struct TWorld {
     std::vector<TPoint> tags;
     std::vector<rfir::ir::TEmitter> emitters;
     std::vector<bool> emitterFailed;  //!< parallel to `emitters`
@@ -35,7 +33,7 @@ struct TWorld
     /** Indices of the tags within `radius` of (x, y) (a superset: whole cells). */
     void tagsNear(double x, double y, double radius, std::vector<size_t>& out) const;
 
-private:
+  private:
     double cell_ = 0.5;
     std::unordered_map<int64_t, std::vector<size_t>> buckets_;
 };
@@ -48,18 +46,18 @@ TWorld buildWorld(const TSimConfig& cfg, uint64_t seed);
  * step model), each missed with cfg.rfid.missProbability. */
 rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
                                                   const mrpt::poses::CPose2D& robot,
-                                                  mrpt::random::CRandomGenerator& rng);
+                                                  rfir::models::TRandom& rng);
 
 /** One IR reading per receiver (thesis eq. 5.3 plus noise; raw window if so
  * configured). */
 rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
                                               const mrpt::poses::CPose2D& robot,
-                                              mrpt::random::CRandomGenerator& rng);
+                                              rfir::models::TRandom& rng);
 
 /** Range and bearing of every landmark in range and field of view (SPEC 7). */
 mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
                                                  const mrpt::poses::CPose2D& robot,
-                                                 mrpt::random::CRandomGenerator& rng);
+                                                 rfir::models::TRandom& rng);
 
 /** Noise-free voltage of an emitter at horizontal distance d and vertical
  * distance h: eq. 5.3 scaled by (referenceHeight / h)^2 (inverse-square law;

@@ -107,7 +107,7 @@ struct CRFIDTagParticleMapImpl {
 
     /** Re-weigh/resample an entry's estimator with a likelihood, refresh cache. */
     static void update(const Map& m, Entry& e, const rfir::models::PointLogLikelihood& f,
-                       mrpt::random::CRandomGenerator& rng) {
+                       rfir::models::TRandom& rng) {
         std::visit([&](auto& est) { est.update(f, rng); }, e.estimator);
         refresh(m, e);
     }
@@ -116,7 +116,7 @@ struct CRFIDTagParticleMapImpl {
      * pose, or (tag_robot_pose = samples) a pose drawn from the robot set. */
     static const mrpt::math::TPose2D& robotFor(const Map& m, bool drawn,
                                                const mrpt::math::TPose2D& robot,
-                                               mrpt::random::CRandomGenerator& rng) {
+                                               rfir::models::TRandom& rng) {
         const auto& s = m.m_robotSamples;
         if (!drawn || s.empty()) return robot;
         return s[rng.drawUniform32bit() % s.size()];
@@ -125,7 +125,7 @@ struct CRFIDTagParticleMapImpl {
     /** A new tag's particles: uniform over the reader's rectangle placed by the
      * robot mean (the seeds) or, per particle, by a drawn robot pose. */
     static void initTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
-                        const ReaderArea& r, mrpt::random::CRandomGenerator& rng) {
+                        const ReaderArea& r, rfir::models::TRandom& rng) {
         const auto mode = m.insertionOptions.tagRobotPose;
         if (mode == TTagRobotPose::Mean || mode == TTagRobotPose::SamplesVisit ||
             m.m_robotSamples.empty()) {
@@ -240,7 +240,7 @@ struct CRFIDTagParticleMapImpl {
                            const mrpt::math::TPose2D& robot) {
         const Map::TSensorTrack before = m.m_track[0];
         const uint64_t step = advance(m.m_track[0], robot);
-        mrpt::random::CRandomGenerator rng(stepSeed(m.insertionOptions.seed, 2 * step));
+        rfir::models::TRandom rng(stepSeed(m.insertionOptions.seed, 2 * step));
         // Group the readers that read each tag at this instant (order kept).
         std::vector<std::pair<std::string, std::vector<ReaderArea>>> groups;
         std::unordered_map<std::string, size_t> where;
@@ -300,7 +300,7 @@ struct CRFIDTagParticleMapImpl {
                          const mrpt::math::TPose2D& robot) {
         const Map::TSensorTrack before = m.m_track[1];
         const uint64_t step = advance(m.m_track[1], robot);
-        mrpt::random::CRandomGenerator rng(
+        rfir::models::TRandom rng(
             stepSeed(m.insertionOptions.seed, 2 * step + 1));
         const auto sensor = sensorPose(o, robot);
         const auto& rb = m.likelihoodOptions.rangeBearing;

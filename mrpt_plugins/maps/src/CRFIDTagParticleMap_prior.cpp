@@ -3,6 +3,7 @@
 #include "CRFIDTagParticleMap_impl.h"
 
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <fstream>
 #include <sstream>
@@ -39,7 +40,7 @@ void CRFIDTagParticleMap::loadPriorFromTextFile(const std::string& path) {
     if (!f) throw std::runtime_error("cannot read prior map '" + path + "'");
     std::string line;
     // Fixed seed: the same file gives the same map in every particle's copy.
-    mrpt::random::CRandomGenerator rng(
+    rfir::models::TRandom rng(
         CRFIDTagParticleMapImpl::stepSeed(insertionOptions.seed, 0xF11E));
     for (size_t n = 1; std::getline(f, line); n++) {
         std::istringstream k(line);

@@ -32,7 +32,7 @@ mrpt::math::TPoint2D rangeBearingToPoint(const mrpt::math::TPose2D& sensor, doub
 
 std::vector<mrpt::math::TPoint2D> sampleRangeBearingInverse(
     const mrpt::math::TPose2D& sensor, double range, double bearing,
-    const RangeBearingParams& p, size_t n, mrpt::random::CRandomGenerator& rng) {
+    const RangeBearingParams& p, size_t n, rfir::models::TRandom& rng) {
     std::vector<mrpt::math::TPoint2D> out(n);
     for (auto& pt : out) {
         const double r =

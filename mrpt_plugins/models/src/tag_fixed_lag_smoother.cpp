@@ -19,7 +19,7 @@ thread_local TScratch t_scratch;
 
 void TagFixedLagSmoother::initUniform(const mrpt::math::TPose2D& robot,
                                       const ReaderArea& r,
-                                      mrpt::random::CRandomGenerator& rng) {
+                                      rfir::models::TRandom& rng) {
     if (m_p.numParticles == 0) throw std::invalid_argument("TagFixedLagSmoother: J = 0");
     std::vector<mrpt::math::TPoint2D> pts(m_p.numParticles);
     for (auto& p : pts) {
@@ -51,7 +51,7 @@ void TagFixedLagSmoother::pushStates() {
 }
 
 void TagFixedLagSmoother::update(const PointLogLikelihood& logLik,
-                                 mrpt::random::CRandomGenerator& rng) {
+                                 rfir::models::TRandom& rng) {
     if (m_pts.empty()) throw std::logic_error("TagFixedLagSmoother::update before init");
     const size_t n = m_pts.size(), lag = m_p.lag;
     auto& sc = t_scratch;

@@ -7,7 +7,7 @@ namespace rfir::models {
 namespace {
 std::vector<mrpt::math::TPoint2D> uniformOverReader(const mrpt::math::TPose2D& robot,
                                                     const ReaderArea& r, size_t n,
-                                                    mrpt::random::CRandomGenerator& rng) {
+                                                    rfir::models::TRandom& rng) {
     // Uniform over the reader's rectangle, drawn in the robot frame and placed
     // in the world by the robot pose (003 eq. 6).
     std::vector<mrpt::math::TPoint2D> pts(n);
@@ -23,7 +23,7 @@ std::vector<mrpt::math::TPoint2D> uniformOverReader(const mrpt::math::TPose2D& r
 
 void TagParticleFilter::initUniform(const mrpt::math::TPose2D& robot,
                                     const ReaderArea& reader,
-                                    mrpt::random::CRandomGenerator& rng) {
+                                    rfir::models::TRandom& rng) {
     if (m_p.numParticles == 0) throw std::invalid_argument("TagParticleFilter: L = 0");
     initFromPoints(uniformOverReader(robot, reader, m_p.numParticles, rng));
 }
@@ -43,7 +43,7 @@ void TagParticleFilter::moveStates(
 }
 
 void TagParticleFilter::update(const PointLogLikelihood& logLik,
-                               mrpt::random::CRandomGenerator& rng) {
+                               rfir::models::TRandom& rng) {
     if (m_pts.empty()) throw std::logic_error("TagParticleFilter::update before init");
     for (size_t l = 0; l < m_pts.size(); l++) m_logW[l] += logLik(m_pts[l]);  // line 10
     m_est = weightedEstimate(m_pts, m_logW);                                  // line 13

@@ -53,7 +53,7 @@ bool CKidnapMonitor::update(std::optional<double> bestMeanLogLik) {
 }
 
 mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
-                                    mrpt::random::CRandomGenerator& rng) {
+                                    rfir::models::TRandom& rng) {
     const TDetection& d = a.det;
     double sx, sy;  // the landmark seen from the pose, robot frame
     if (d.kind == TDetection::Kind::RFID) {
@@ -74,7 +74,7 @@ mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
 std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& anchors,
                                                  size_t n, double currentPhi,
                                                  const TKidnapOptions& o,
-                                                 mrpt::random::CRandomGenerator& rng) {
+                                                 rfir::models::TRandom& rng) {
     std::vector<mrpt::poses::CPose2D> out;
     if (anchors.empty()) return out;
     for (size_t i = 0; i < n; i++) {

@@ -8,6 +8,7 @@
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <cmath>
 #include <optional>
@@ -149,7 +150,7 @@ class CTagMapEngine : public CSlamEngine {
     CRobotPoseParticles pf_;
     mrpt::bayes::CParticleFilter filter_;
     CKidnapMonitor kidnap_;
-    mrpt::random::CRandomGenerator rng_;
+    rfir::models::TRandom rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     bool mapThisStep_ = true;
     std::vector<CRFIDTagParticleMap::TRobotReads> reads_;

@@ -14,6 +14,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
+#include <rfir/models/random.h>
 
 #include <memory>
 #include <optional>
@@ -130,7 +131,7 @@ class CIRLocalizer {
     TLocalizerParams m_params;
     mrpt::slam::CMonteCarloLocalization2D m_pdf;
     mrpt::bayes::CParticleFilter m_pf;
-    mrpt::random::CRandomGenerator m_rng;
+    rfir::models::TRandom m_rng;
     bool m_started = false;
 };
 

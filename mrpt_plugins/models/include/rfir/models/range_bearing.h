@@ -5,6 +5,7 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <vector>
 
@@ -34,6 +35,6 @@ mrpt::math::TPoint2D rangeBearingToPoint(const mrpt::math::TPose2D& sensor, doub
  * bearing drawn from the sensor's Gaussians (used to initialise a landmark). */
 std::vector<mrpt::math::TPoint2D> sampleRangeBearingInverse(
     const mrpt::math::TPose2D& sensor, double range, double bearing,
-    const RangeBearingParams& p, size_t n, mrpt::random::CRandomGenerator& rng);
+    const RangeBearingParams& p, size_t n, rfir::models::TRandom& rng);
 
 }  // namespace rfir::models

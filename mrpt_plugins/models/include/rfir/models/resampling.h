@@ -5,6 +5,7 @@
 #pragma once
 
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <string>
 #include <vector>
@@ -25,8 +26,7 @@ const char* toString(ResamplingScheme s);
  * copies of one particle are adjacent. Throws if logWeights is empty or all
  * -inf / NaN. */
 std::vector<size_t> resampleIndices(const std::vector<double>& logWeights, size_t n,
-                                    ResamplingScheme scheme,
-                                    mrpt::random::CRandomGenerator& rng);
+                                    ResamplingScheme scheme, rfir::models::TRandom& rng);
 
 /** Normalised linear weights from log-weights (max-shifted, sum 1). */
 std::vector<double> normalisedWeights(const std::vector<double>& logWeights);

@@ -7,6 +7,7 @@
 #include <rfir/models/resampling.h>
 
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <cstdint>
 #include <functional>
@@ -35,12 +36,12 @@ class TagFixedLagSmoother {
     /** First detection: uniform over the reader's rectangle; stores the
      * initial states as the first history entry (Alg. 2 lines 6-8). */
     void initUniform(const mrpt::math::TPose2D& robot, const ReaderArea& reader,
-                     mrpt::random::CRandomGenerator& rng);
+                     rfir::models::TRandom& rng);
     void initFromPoints(std::vector<mrpt::math::TPoint2D> pts);
 
     /** Re-detection (Alg. 2 lines 10-24): random step, weigh, store, resample
      * with histories, smooth, estimate. */
-    void update(const PointLogLikelihood& logLik, mrpt::random::CRandomGenerator& rng);
+    void update(const PointLogLikelihood& logLik, rfir::models::TRandom& rng);
 
     /** Moves particle j and its whole stored history by f(j, state) and
      * refreshes the estimate. */

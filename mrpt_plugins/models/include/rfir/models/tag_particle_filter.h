@@ -7,6 +7,7 @@
 #include <rfir/models/resampling.h>
 
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <cstdint>
 #include <functional>
@@ -34,14 +35,14 @@ class TagParticleFilter {
     /** First detection: L particles uniform over the reader's rectangle placed
      * by the robot pose (weight 1). */
     void initUniform(const mrpt::math::TPose2D& robot, const ReaderArea& reader,
-                     mrpt::random::CRandomGenerator& rng);
+                     rfir::models::TRandom& rng);
     /** First detection from given samples (e.g. a range-bearing inverse model);
      * the particle count becomes pts.size(). */
     void initFromPoints(std::vector<mrpt::math::TPoint2D> pts);
 
     /** Re-detection: weigh every particle by logLik, take the weighted mean as
      * the estimate (line 13), then resample (lines 14-18). */
-    void update(const PointLogLikelihood& logLik, mrpt::random::CRandomGenerator& rng);
+    void update(const PointLogLikelihood& logLik, rfir::models::TRandom& rng);
 
     /** Moves particle j to f(j, particle j) (keeps the weights) and refreshes
      * the estimate: e.g. a tag mapped relative to the robot placed by a robot

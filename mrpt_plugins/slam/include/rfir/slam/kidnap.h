@@ -12,6 +12,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <rfir/models/random.h>
 
 #include <optional>
 #include <vector>
@@ -61,12 +62,12 @@ class CKidnapMonitor {
 /** A robot pose drawn so that anchor `a` is consistent with its detection,
  * with heading `phi`. */
 mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
-                                    mrpt::random::CRandomGenerator& rng);
+                                    rfir::models::TRandom& rng);
 
 /** n poses for sensor resetting from the anchors of this step. */
 std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& anchors,
                                                  size_t n, double currentPhi,
                                                  const TKidnapOptions& o,
-                                                 mrpt::random::CRandomGenerator& rng);
+                                                 rfir::models::TRandom& rng);
 
 }  // namespace rfir::slam

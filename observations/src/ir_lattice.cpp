@@ -100,10 +100,4 @@ std::vector<TEmitter> makeEmitterLattice(const TRoom& room, const TLatticeParams
     return out;
 }
 
-double expectedVoltage(double horizontalDistance)
-{
-    const double d = horizontalDistance * 1000.0;  // eq. 5.3 takes millimetres
-    return -3.27e-5 * d * d + 2.855e-3 * d + 1.81997;
-}
-
 }  // namespace rfir::ir

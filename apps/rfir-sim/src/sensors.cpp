@@ -1,5 +1,7 @@
 /* rfir-sim: sensor models. */
 #include <cstddef>  // ir_decoder.h uses size_t
+#include <rfir/models/range_bearing.h>
+#include <rfir/models/read_model.h>
 #include <rfir/obs/ir_decoder.h>
 
 #include "world.h"
@@ -21,17 +23,18 @@ rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const T
     std::vector<size_t> near;
     w.tagsNear(robot.x(), robot.y(), reach, near);
     std::sort(near.begin(), near.end());
-    const double c = std::cos(robot.phi()), s = std::sin(robot.phi());
+    const mrpt::math::TPose2D pose = robot.asTPose();
+    const double c = std::cos(pose.phi), s = std::sin(pose.phi);
     for (const auto& r : cfg.readers)
     {
         rfir::obs::CObservationRFIDReaders::TReading rd;
         rd.reader = r;
         for (size_t k : near)
         {
-            // Tag in the robot frame, minus the reader centre (SPEC 2: e).
-            const double dx = w.tags[k].x - robot.x(), dy = w.tags[k].y - robot.y();
-            const double ex = c * dx + s * dy - r.x, ey = -s * dx + c * dy - r.y;
-            if (std::abs(ex) >= r.halfX || std::abs(ey) >= r.halfY) continue;
+            // The likelihood's read model (SPEC 2: e), read inside its rectangle.
+            const auto e = rfir::models::readModel(pose, c, s, r.x, r.y,
+                                                   {w.tags[k].x, w.tags[k].y});
+            if (std::abs(e.x) >= r.halfX || std::abs(e.y) >= r.halfY) continue;
             // Draw only when misses are on, so that p = 0 leaves the stream alone.
             if (cfg.rfid.missProbability > 0 &&
                 rng.drawUniform(0.0, 1.0) < cfg.rfid.missProbability)
@@ -45,8 +48,12 @@ rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const T
 
 double modelVoltage(const TIRConfig& ir, double d, double h)
 {
-    const double k = ir.referenceHeight / h;
-    return rfir::ir::expectedVoltage(d) * k * k;
+    // The localizer's curve (eq. 5.3), inverse-square in the height.
+    rfir::ir::TVoltageCurve curve;
+    curve.fitHeight = ir.referenceHeight;
+    curve.maxDistance = ir.visibleRadius;
+    curve.heightModel = rfir::ir::TVoltageCurve::HeightModel::InverseSquare;
+    return curve.expected(d, h);
 }
 
 rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
@@ -137,10 +144,10 @@ mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TW
     const auto sensor = robot + mrpt::poses::CPose2D(sp.x, sp.y, sp.yaw);
     for (size_t i = 0; i < w.landmarks.size(); i++)
     {
-        const double dx = w.landmarks[i].x - sensor.x(), dy = w.landmarks[i].y - sensor.y();
-        const double r = std::hypot(dx, dy);
-        const double b = std::atan2(std::sin(std::atan2(dy, dx) - sensor.phi()),
-                                    std::cos(std::atan2(dy, dx) - sensor.phi()));
+        const auto h = rfir::models::rangeBearingModel(
+            sensor.asTPose(), {w.landmarks[i].x, w.landmarks[i].y});
+        const double r = h.range;
+        const double b = std::atan2(std::sin(h.bearing), std::cos(h.bearing));
         if (r > sp.maxRange || std::abs(b) > 0.5 * sp.fov) continue;
         mrpt::obs::CObservationBearingRange::TMeasurement m;
         m.range = float(r + rng.drawGaussian1D(0, cfg.rb.sigmaRange));

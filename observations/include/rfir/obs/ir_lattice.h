@@ -3,6 +3,8 @@
  * unique-ID emitter (an LED array, several codes) in the centre of every four. */
 #pragma once
 
+#include <rfir/obs/ir_voltage_curve.h>  // expectedVoltage, eq. 5.3
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,10 +50,5 @@ struct TLatticeParams
  * a bad room or parameters, or if the room needs more unique IDs than the
  * 9 codes give. */
 std::vector<TEmitter> makeEmitterLattice(const TRoom& room, const TLatticeParams& p = {});
-
-/** Amplified receiver voltage at horizontal distance d (metres) from the
- * emitter, thesis eq. 5.3 (fitted with d in mm at 1.2 m height, 0-300 mm):
- * V = -3.27e-5 d_mm^2 + 2.855e-3 d_mm + 1.81997. */
-double expectedVoltage(double horizontalDistance);
 
 }  // namespace rfir::ir

@@ -9,23 +9,19 @@
 #include <string>
 #include <vector>
 
-namespace rfir::ir
-{
-struct TRoom
-{
+namespace rfir::ir {
+struct TRoom {
     double minX = 0, minY = 0, maxX = 0, maxY = 0;  //!< metres
 };
 
-struct TEmitter
-{
+struct TEmitter {
     std::string id;              //!< ascending codes written together ("39")
     std::vector<uint8_t> codes;  //!< ascending, 1..9
     double x = 0, y = 0, z = 0;  //!< z: height above the floor (m)
     bool repeated = false;       //!< single-code emitter, ID used many times
 };
 
-struct TLatticeParams
-{
+struct TLatticeParams {
     double pitch = 0.8;   //!< distance between two emitters of the same type (m)
     double height = 1.5;  //!< emitter height above the floor (m)
     /** Codes of the repeated-ID emitters, tiled so that grid neighbours differ:

@@ -33,26 +33,6 @@ TEST(TagEstimatorRegistry, NamesCreateAndRejectUnknown) {
 }
 
 namespace {
-/** The smoother as first written: doubles, whole histories copied on
- * resampling; its steps are the same stream draws as the compact one's. */
-struct TExactSmoother {
-    std::vector<std::vector<TPoint2D>> hist;  // per particle, oldest first
-    size_t lag;
-    void init(const std::vector<TPoint2D>& pts, size_t L) {
-        lag = L;
-        hist.clear();
-        for (const auto& p : pts) hist.push_back({p});
-    }
-    std::vector<TPoint2D> smoothed() const {
-        std::vector<TPoint2D> v;
-        for (const auto& h : hist) {
-            double sx = 0, sy = 0;
-            for (const auto& s : h) sx += s.x, sy += s.y;
-            v.push_back({sx / h.size(), sy / h.size()});
-        }
-        return v;
-    }
-};
 
 double maxDiff(const std::vector<TPoint2D>& a, const std::vector<TPoint2D>& b) {
     double d = 0;

@@ -6,6 +6,7 @@
 #include <rfir/models/tag_fixed_lag_smoother.h>
 #include <rfir/models/tag_particle_filter.h>
 
+#include <mrpt/io/CFileInputStream.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
@@ -15,6 +16,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 using namespace rfir::models;
 using mrpt::math::TPoint2D;
@@ -182,4 +185,50 @@ TEST(TagMapMemory, BytesPerMappedTag) {
     // The count is not trivially small: it holds the particles themselves.
     EXPECT_GT(ps, 100 * (8 + 16 + 8 + 25));
     EXPECT_GT(pf, 100 * 8);
+}
+
+TEST(TagMapIo, ReadsVersion2Streams) {
+    // Maps written by the whole-history code (tests/data/tagmap_v2/README.md):
+    // the estimates come back (the smoother's from the sums of its stored
+    // states, to the storage quantum), and the maps keep mapping.
+    rfir::maps::registerAllClasses();
+    for (const std::string kind : {"pf", "ps"}) {
+        const std::string base =
+            std::string(RFIR_SOURCE_DIR) + "/tests/data/tagmap_v2/tagmap_v2_" + kind;
+        rfir::maps::CRFIDTagParticleMap m;
+        {
+            mrpt::io::CFileInputStream f(base + ".bin");
+            mrpt::serialization::archiveFrom(f) >> m;
+        }
+        ASSERT_EQ(m.tagCount(), 9u) << kind;
+        EXPECT_EQ(m.insertionOptions.estimator,
+                  kind == "pf" ? kParticleFilterName : kFixedLagSmootherName);
+        std::ifstream want(base + ".txt");
+        std::string line;
+        size_t n = 0;
+        while (std::getline(want, line)) {
+            std::istringstream in(line);
+            std::string rec, id;
+            double x, y, sx, sy;
+            if (!(in >> rec >> id >> x >> y >> sx >> sy) || rec != "tag") continue;
+            const auto* t = m.getTag(id);
+            ASSERT_NE(t, nullptr) << id;
+            EXPECT_NEAR(t->estimate.mean.x, x, 2e-6) << kind << " " << id;
+            EXPECT_NEAR(t->estimate.mean.y, y, 2e-6) << kind << " " << id;
+            EXPECT_NEAR(std::sqrt(t->estimate.cov(0, 0)), sx, 2e-6) << kind << " " << id;
+            EXPECT_EQ(t->particles().size(), 20u);
+            n++;
+        }
+        EXPECT_EQ(n, 9u);
+        const auto grid = tagmaps_test::grid(3, 0.25);
+        const auto readers = tagmaps_test::ring(0.03);
+        for (const auto& q : tagmaps_test::lawnmower(-0.2, 0.8, -0.2, 0.8, 0.07, 0.02))
+            m.insertObservation(*tagmaps_test::sense(readers, grid, q),
+                                mrpt::poses::CPose3D(mrpt::poses::CPose2D(q)));
+        for (const auto& g : grid)
+            EXPECT_LT(std::hypot(m.getTag(g.id)->estimate.mean.x - g.x,
+                                 m.getTag(g.id)->estimate.mean.y - g.y),
+                      0.03)
+                << kind << " " << g.id;
+    }
 }

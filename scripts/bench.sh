@@ -2,8 +2,10 @@
 # Runs the full benchmark (rfir-bench) and writes its results into the docs:
 # docs/img/bench_time_vs_M.png, bench_time_vs_N.png, bench_memory_vs_N.png,
 # the results section of docs/benchmark.md (between
-# the RESULTS markers). Builds rfir-bench first if needed. The full run takes
-# about 7 minutes and needs about 6 GB of free memory (the N = 100,000 states).
+# the RESULTS markers). Builds rfir-bench first if needed. The full run sweeps
+# N up to 1,000,000 tags: building those states takes several minutes per
+# case and round, and needs about 8 GB of free memory (PS-SLAM's 1M-tag state;
+# FastSLAM's 5.8 GB at N = 100,000 is freed before).
 #
 #   bash scripts/bench.sh                 # full run, updates docs/
 #   bash scripts/bench.sh --quick         # smoke run (seconds), docs untouched

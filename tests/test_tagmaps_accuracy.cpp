@@ -7,10 +7,9 @@
 
 using namespace tagmaps_test;
 using rfir::maps::CRFIDTagParticleMap;
-using rfir::maps::TTagEstimatorKind;
 
 namespace {
-double mapError(TTagEstimatorKind kind, double half, double pitch, double rowStep,
+double mapError(const std::string& kind, double half, double pitch, double rowStep,
                 double roughening = 0.0) {
     CRFIDTagParticleMap m;
     m.insertionOptions.estimator = kind;
@@ -35,12 +34,12 @@ double mapError(TTagEstimatorKind kind, double half, double pitch, double rowSte
 }  // namespace
 
 TEST(TagMapAccuracy, FilterAndSmootherOnSmallAndLargeReaders) {
-    const double pf60 = mapError(TTagEstimatorKind::ParticleFilter, 0.03, 0.25, 0.07);
-    const double ps60 = mapError(TTagEstimatorKind::FixedLagSmoother, 0.03, 0.25, 0.07);
-    const double pf300 = mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13);
+    const double pf60 = mapError(rfir::models::kParticleFilterName, 0.03, 0.25, 0.07);
+    const double ps60 = mapError(rfir::models::kFixedLagSmootherName, 0.03, 0.25, 0.07);
+    const double pf300 = mapError(rfir::models::kParticleFilterName, 0.15, 0.5, 0.13);
     const double pfr300 =
-        mapError(TTagEstimatorKind::ParticleFilter, 0.15, 0.5, 0.13, 0.001);
-    const double ps300 = mapError(TTagEstimatorKind::FixedLagSmoother, 0.15, 0.5, 0.13);
+        mapError(rfir::models::kParticleFilterName, 0.15, 0.5, 0.13, 0.001);
+    const double ps300 = mapError(rfir::models::kFixedLagSmootherName, 0.15, 0.5, 0.13);
     std::printf(
         "[map, exact poses, 2 crossed sweeps] 60 mm: PF %.1f mm, PS %.1f mm; "
         "300 mm: PF %.1f mm, PF+roughening %.1f mm, PS %.1f mm\n",

@@ -62,7 +62,7 @@ TEST(TagMapIni, CreatedThroughMultiMetricMap) {
     auto m = mm.mapByClass<CRFIDTagParticleMap>();
     ASSERT_TRUE(m);
     const auto& io = m->insertionOptions;
-    EXPECT_EQ(io.estimator, rfir::maps::TTagEstimatorKind::FixedLagSmoother);
+    EXPECT_EQ(io.estimator, rfir::models::kFixedLagSmootherName);
     EXPECT_EQ(io.numParticles, 64u);
     EXPECT_EQ(io.lag, 20u);
     EXPECT_DOUBLE_EQ(io.smootherStepSigma, 0.004);
@@ -120,7 +120,7 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey) {
 }
 
 namespace {
-void buildMap(CRFIDTagParticleMap& m, rfir::maps::TTagEstimatorKind kind, double x1) {
+void buildMap(CRFIDTagParticleMap& m, const std::string& kind, double x1) {
     m.insertionOptions.estimator = kind;
     m.insertionOptions.numParticles = 40;
     m.insertionOptions.lag = 7;
@@ -147,15 +147,15 @@ void expectSame(const CRFIDTagParticleMap& a, const CRFIDTagParticleMap& b) {
             EXPECT_EQ(pa[k].x, pb[k].x);
             EXPECT_EQ(pa[k].y, pb[k].y);
         }
-        EXPECT_EQ(ta[i]->estimator.index(), tb[i]->estimator.index());
+        EXPECT_STREQ(ta[i]->estimator->name(), tb[i]->estimator->name());
     }
     EXPECT_EQ(a.landmarkNames(), b.landmarkNames());
 }
 }  // namespace
 
 TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically) {
-    for (auto kind : {rfir::maps::TTagEstimatorKind::ParticleFilter,
-                      rfir::maps::TTagEstimatorKind::FixedLagSmoother}) {
+    for (auto kind :
+         {rfir::models::kParticleFilterName, rfir::models::kFixedLagSmootherName}) {
         CRFIDTagParticleMap a;
         a.likelihoodOptions.robotUpdate = rfir::maps::TRobotUpdatePolicy::Revisit;
         a.insertionOptions.rougheningSigma = 0.001;
@@ -195,8 +195,8 @@ TEST(TagMapIo, MultiMetricMapCopyKeepsTheMap) {
     mrpt::maps::TSetOfMetricMapInitializers defs;
     defs.loadFromConfigFile(cfg, "MappingApplication");
     mrpt::maps::CMultiMetricMap mm(defs);
-    buildMap(*mm.mapByClass<CRFIDTagParticleMap>(),
-             rfir::maps::TTagEstimatorKind::FixedLagSmoother, 0.4);
+    buildMap(*mm.mapByClass<CRFIDTagParticleMap>(), rfir::models::kFixedLagSmootherName,
+             0.4);
     const mrpt::maps::CMultiMetricMap copy(mm);  // copies by serialization
     auto a = mm.mapByClass<CRFIDTagParticleMap>();
     auto b = copy.mapByClass<CRFIDTagParticleMap>();
@@ -207,7 +207,7 @@ TEST(TagMapIo, MultiMetricMapCopyKeepsTheMap) {
 
 TEST(TagMapIo, TextFileAndVisualization) {
     CRFIDTagParticleMap m;
-    buildMap(m, rfir::maps::TTagEstimatorKind::ParticleFilter, 0.6);
+    buildMap(m, rfir::models::kParticleFilterName, 0.6);
     const std::string prefix = std::string(RFIR_BINARY_DIR) + "/test_tagmaps_out";
     m.saveMetricMapRepresentationToFile(prefix);
     std::ifstream f(prefix + "_tags.txt");

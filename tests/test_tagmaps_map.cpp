@@ -195,7 +195,7 @@ TEST(TagMap, RevisitNeedsTravelWhenAsked) {
 TEST(TagMap, RangeBearingLandmarks) {
     CRFIDTagParticleMap m;
     m.setLandmarkNames({"L0", "L1", ""});
-    m.insertionOptions.estimator = rfir::maps::TTagEstimatorKind::FixedLagSmoother;
+    m.insertionOptions.estimator = rfir::models::kFixedLagSmootherName;
     m.insertionOptions.smootherStepSigma = 0.002;
     const mrpt::math::TPoint2D truth(1.2, 0.4);
     mrpt::random::CRandomGenerator noise(9);
@@ -264,8 +264,11 @@ TEST(TagMap, RobotLikelihoodOverTagParticles) {
     EXPECT_NEAR(m.computeObservationLikelihood(*o, pose3(robot)), std::log(s / 4), 1e-12);
     // tag_mean: against the mean only.
     m.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagMean;
-    EXPECT_EQ(m.computeObservationLikelihood(*o, pose3(robot)),
-              det.logLikelihood(robot, r, t->estimate.mean));
+    // The robot pose as the map sees it: CPose3D's yaw() is rebuilt from its
+    // rotation matrix (0.1 comes back as 0.10000000000000009).
+    const auto P = pose3(robot);
+    EXPECT_EQ(m.computeObservationLikelihood(*o, P),
+              det.logLikelihood({P.x(), P.y(), P.yaw()}, r, t->estimate.mean));
     // K set in code above the weighing's bound: refused, not cut to 64.
     CRFIDTagParticleMap big;
     big.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagParticles;

@@ -12,7 +12,7 @@ namespace rfir::bench {
 /** What one run measures (the command line). */
 struct TBenchOptions {
     std::vector<size_t> sweepM{100, 200, 500, 1000, 2000, 5000};
-    std::vector<size_t> sweepN{10, 100, 1000, 10000, 100000};
+    std::vector<size_t> sweepN{10, 100, 1000, 10000, 100000, 1000000};
     size_t fixedN = 1000;  //!< tags mapped in the sweep over M
     size_t fixedM = 500;   //!< robot particles in the sweep over N
     std::vector<std::string> methods{"ps", "pf", "fastslam"};

@@ -6,13 +6,28 @@ using namespace rfir::maps;
 using rfir::models::PointEstimate;
 using rfir::models::ReaderArea;
 
-const std::vector<mrpt::math::TPoint2D>& CRFIDTagParticleMap::TTagEntry::particles()
-    const {
-    return std::visit(
-        [](const auto& e) -> const std::vector<mrpt::math::TPoint2D>& {
-            return e.particles();
-        },
-        estimator);
+size_t CRFIDTagParticleMap::TTagEntry::memoryBytes() const {
+    const auto pts = [](const std::vector<mrpt::math::TPoint2D>& v) {
+        return v.capacity() * sizeof(mrpt::math::TPoint2D);
+    };
+    // The id's heap block only when it outgrows the short-string buffer.
+    const size_t idHeap =
+        id.capacity() > std::string().capacity() ? id.capacity() + 1 : 0;
+    return sizeof(*this) + idHeap + (estimator ? estimator->memoryBytes() : 0) +
+           pts(sample) + pts(visitStartSample) +
+           spreadPoses.capacity() * sizeof(mrpt::math::TPose2D);
+}
+
+size_t CRFIDTagParticleMap::memoryBytes() const {
+    // A node of std::unordered_map<std::string, TTagEntry> (libstdc++): next
+    // pointer, key, value and the cached hash; plus one bucket pointer each.
+    constexpr size_t kNode = sizeof(void*) + sizeof(std::string) + sizeof(size_t);
+    size_t b = sizeof(*this);
+    for (const auto* t : {&m_tags, &m_landmarks}) {
+        b += t->bucket_count() * sizeof(void*);
+        for (const auto& kv : *t) b += kNode + kv.second.memoryBytes();
+    }
+    return b;
 }
 
 using Impl = rfir::maps::CRFIDTagParticleMapImpl;

@@ -21,46 +21,44 @@ struct CRFIDTagParticleMapImpl {
     using Map = CRFIDTagParticleMap;
     using Entry = Map::TTagEntry;
 
+    /** The generator of one insert: a fresh MT19937 seeded by splitmix64 of
+     * (seed, sensor step). Why per step and not one generator for the run:
+     * the map's draws then depend only on (seed, step), not on what was drawn
+     * before, so a map copied by serialization (each robot particle of an
+     * RBPF keeps its own) continues exactly as the original would, and the
+     * result does not depend on how many threads weigh the robot particles
+     * (the map is only written between weighings, on one thread). The
+     * smoother's random steps come from its own counter-based stream per tag
+     * (see TagFixedLagSmoother), for the same reason. */
     static uint32_t stepSeed(uint64_t seed, uint64_t salt) {
-        // splitmix64: decorrelates consecutive steps; the generator depends only
-        // on (seed, step), so serialized copies continue identically.
+        // splitmix64: decorrelates consecutive steps.
         uint64_t z = seed * 0x9E3779B97F4A7C15ULL + salt + 0x632BE59BD9B4E019ULL;
         z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
         z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
         return static_cast<uint32_t>((z ^ (z >> 31)) & 0xFFFFFFFFULL);
     }
 
-    static Map::TEstimator makeEstimator(const Map::TInsertionOptions& o) {
-        if (o.estimator == TTagEstimatorKind::ParticleFilter) {
-            rfir::models::TagParticleFilterParams p;
-            p.numParticles = o.numParticles;
-            p.resampling = o.resampling;
-            p.essThreshold = o.essThreshold;
-            p.rougheningSigma = o.rougheningSigma;
-            return rfir::models::TagParticleFilter(p);
-        }
-        rfir::models::TagFixedLagSmootherParams p;
+    static rfir::models::CTagEstimatorPtr makeEstimator(const Map::TInsertionOptions& o) {
+        rfir::models::TTagEstimatorParams p;
         p.numParticles = o.numParticles;
         p.lag = o.lag;
         p.stepSigma = o.smootherStepSigma;
         p.resampling = o.resampling;
-        return rfir::models::TagFixedLagSmoother(p);
+        p.essThreshold = o.essThreshold;
+        p.rougheningSigma = o.rougheningSigma;
+        return rfir::models::createTagEstimator(o.estimator, p);
     }
 
     /** Refreshes the cached estimate and, for robot_likelihood = tag_particles,
      * the K evenly spaced particles of the set the estimate is built from (PF:
      * the resampled set; smoother: the smoothed set). */
     static void refresh(const Map& m, Entry& e) {
-        e.estimate = std::visit([](auto& est) { return est.estimate(); }, e.estimator);
+        e.estimate = e.estimator->estimate();
         const bool spread = !e.spreadPoses.empty();
         if (!spread &&
             m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles)
             return;
-        std::vector<mrpt::math::TPoint2D> pts;
-        if (const auto* ps = std::get_if<rfir::models::TagFixedLagSmoother>(&e.estimator))
-            pts = ps->smoothedParticles();
-        else
-            pts = e.particles();
+        auto pts = e.estimator->smoothedParticles();
         if (spread) {
             for (size_t j = 0; j < pts.size(); j++) pts[j] = spreadPoint(e, j, pts[j]);
             e.estimate = rfir::models::weightedEstimate(pts, {});
@@ -99,7 +97,7 @@ struct CRFIDTagParticleMapImpl {
         const auto f = [&](size_t j, const mrpt::math::TPoint2D& p) {
             return spreadPoint(e, j, p);
         };
-        std::visit([&](auto& est) { est.moveStates(f); }, e.estimator);
+        e.estimator->moveStates(f);
         e.spreadPoses.clear();
         e.spreadPoses.shrink_to_fit();
         refresh(m, e);
@@ -108,7 +106,7 @@ struct CRFIDTagParticleMapImpl {
     /** Re-weigh/resample an entry's estimator with a likelihood, refresh cache. */
     static void update(const Map& m, Entry& e, const rfir::models::PointLogLikelihood& f,
                        rfir::models::TRandom& rng) {
-        std::visit([&](auto& est) { est.update(f, rng); }, e.estimator);
+        e.estimator->update(f, rng);
         refresh(m, e);
     }
 
@@ -129,7 +127,7 @@ struct CRFIDTagParticleMapImpl {
         const auto mode = m.insertionOptions.tagRobotPose;
         if (mode == TTagRobotPose::Mean || mode == TTagRobotPose::SamplesVisit ||
             m.m_robotSamples.empty()) {
-            std::visit([&](auto& est) { est.initUniform(robot, r, rng); }, e.estimator);
+            e.estimator->initUniform(robot, r, rng);
             if (mode == TTagRobotPose::SamplesVisit && !m.m_robotSamples.empty()) {
                 e.spreadOrigin = robot;
                 e.spreadTravel = m.m_track[0].travel;
@@ -137,16 +135,11 @@ struct CRFIDTagParticleMapImpl {
                 for (auto& q : e.spreadPoses) q = robotFor(m, true, robot, rng);
             }
         } else {
-            std::vector<mrpt::math::TPoint2D> pts(m.insertionOptions.numParticles);
-            for (auto& p : pts) {
-                const auto& pose = robotFor(m, true, robot, rng);
-                ReaderArea off = r;
-                off.x = r.x + rng.drawUniform(-r.halfX, r.halfX);
-                off.y = r.y + rng.drawUniform(-r.halfY, r.halfY);
-                p = rfir::models::readerCentreInWorld(pose, off);
-            }
-            std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
-                       e.estimator);
+            // Per particle, a robot pose drawn from the robot set places it.
+            const auto pts = rfir::models::sampleReaderArea(
+                [&] { return robotFor(m, true, robot, rng); }, r,
+                m.insertionOptions.numParticles, rng);
+            e.estimator->initFromPoints(pts);
         }
         refresh(m, e);
     }
@@ -300,8 +293,7 @@ struct CRFIDTagParticleMapImpl {
                          const mrpt::math::TPose2D& robot) {
         const Map::TSensorTrack before = m.m_track[1];
         const uint64_t step = advance(m.m_track[1], robot);
-        rfir::models::TRandom rng(
-            stepSeed(m.insertionOptions.seed, 2 * step + 1));
+        rfir::models::TRandom rng(stepSeed(m.insertionOptions.seed, 2 * step + 1));
         const auto sensor = sensorPose(o, robot);
         const auto& rb = m.likelihoodOptions.rangeBearing;
         for (const auto& z : o.sensedData) {
@@ -314,8 +306,7 @@ struct CRFIDTagParticleMapImpl {
                 e.estimator = makeEstimator(m.insertionOptions);
                 auto pts = rfir::models::sampleRangeBearingInverse(
                     sensor, z.range, z.yaw, rb, m.insertionOptions.numParticles, rng);
-                std::visit([&](auto& est) { est.initFromPoints(std::move(pts)); },
-                           e.estimator);
+                e.estimator->initFromPoints(pts);
                 refresh(m, e);
                 markRead(m, e, before, m.m_track[1], 1);
                 m.m_landmarks.emplace(id, std::move(e));

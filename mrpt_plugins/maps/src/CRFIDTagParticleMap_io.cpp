@@ -1,5 +1,7 @@
 /* rfir: CRFIDTagParticleMap serialization (versioned), text output and 3D view. */
 #include <rfir/maps/CRFIDTagParticleMap.h>
+#include <rfir/models/tag_fixed_lag_smoother.h>
+#include <rfir/models/tag_particle_filter.h>
 #include <rfir/obs/bounded_read.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -49,33 +51,16 @@ rfir::models::PointEstimate readEst(CArchive& a) {
     return e;
 }
 
-void writeEstimator(CArchive& a, const CRFIDTagParticleMap::TEstimator& est) {
-    a.WriteAs<uint8_t>(est.index());
-    if (const auto* pf = std::get_if<rfir::models::TagParticleFilter>(&est)) {
-        const auto& p = pf->params();
-        a.WriteAs<uint64_t>(p.numParticles);
-        a.WriteAs<uint8_t>(static_cast<uint8_t>(p.resampling));
-        a << p.essThreshold << p.rougheningSigma;
-        writePts(a, pf->particles());
-        for (double w : pf->logWeights()) a << w;
-        a.WriteAs<uint64_t>(pf->updateCount());
-        return;
-    }
-    const auto& ps = std::get<rfir::models::TagFixedLagSmoother>(est);
-    const auto& p = ps.params();
-    a.WriteAs<uint64_t>(p.numParticles);
-    a.WriteAs<uint64_t>(p.lag);
-    a << p.stepSigma;
-    a.WriteAs<uint8_t>(static_cast<uint8_t>(p.resampling));
-    writePts(a, ps.particles());
-    writePts(a, ps.rawHistory());
-    a.WriteAs<uint64_t>(ps.rawHead());
-    a.WriteAs<uint64_t>(ps.storedStates());
-    a.WriteAs<uint64_t>(ps.updateCount());
+void writeEstimator(CArchive& a, const rfir::models::CTagEstimator& est) {
+    // v3: the registry name, then the estimator's own versioned state.
+    a << std::string(est.name());
+    est.writeState(a);
 }
 
-CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a,
-                                              const rfir::models::PointEstimate& est) {
+/** Version 0-2 streams: a kind byte (0 particle filter, 1 smoother) and the
+ * whole particle sets / histories in doubles. */
+rfir::models::CTagEstimatorPtr readLegacyEstimator(
+    CArchive& a, const rfir::models::PointEstimate& est) {
     const auto kind = a.ReadAs<uint8_t>();
     if (kind == 0) {
         rfir::models::TagParticleFilterParams p;
@@ -86,9 +71,9 @@ CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a,
         std::vector<double> w(pts.size());
         for (double& x : w) a >> x;
         const auto upd = a.ReadAs<uint64_t>();
-        rfir::models::TagParticleFilter pf;
-        pf.setState(p, std::move(pts), std::move(w), upd, est);
-        return pf;
+        auto pf = std::make_unique<rfir::models::TagParticleFilter>();
+        pf->setState(p, pts, w, upd, est);
+        return rfir::models::CTagEstimatorPtr(std::move(pf));
     }
     if (kind != 1)
         throw std::runtime_error("CRFIDTagParticleMap: unknown estimator kind");
@@ -102,9 +87,19 @@ CRFIDTagParticleMap::TEstimator readEstimator(CArchive& a,
     const auto head = a.ReadAs<uint64_t>();
     const auto count = a.ReadAs<uint64_t>();
     const auto upd = a.ReadAs<uint64_t>();
-    rfir::models::TagFixedLagSmoother ps;
-    ps.setState(p, std::move(pts), std::move(hist), head, count, upd);
-    return ps;
+    auto ps = std::make_unique<rfir::models::TagFixedLagSmoother>();
+    ps->setLegacyState(p, pts, hist, head, count, upd);
+    return rfir::models::CTagEstimatorPtr(std::move(ps));
+}
+
+rfir::models::CTagEstimatorPtr readEstimator(CArchive& a, uint8_t version,
+                                             const rfir::models::PointEstimate& est) {
+    if (version < 3) return readLegacyEstimator(a, est);
+    const std::string name = readBoundedString(a, kWhat);
+    // Parameters come with the state; the factory's defaults are replaced.
+    auto e = rfir::models::createTagEstimator(name, {});
+    e->readState(a);
+    return rfir::models::CTagEstimatorPtr(std::move(e));
 }
 
 void writeEntries(CArchive& a,
@@ -118,7 +113,7 @@ void writeEntries(CArchive& a,
         a << e->lastReadTravel;
         writeEst(a, e->visitStartEstimate);
         writeEst(a, e->estimate);
-        writeEstimator(a, e->estimator);
+        writeEstimator(a, *e->estimator);
         writePts(a, e->sample);  // v2
         writePts(a, e->visitStartSample);
         a.WriteAs<uint64_t>(e->spreadPoses.size());
@@ -142,8 +137,10 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
         if (version >= 1) a >> e.lastReadTravel;
         e.visitStartEstimate = readEst(a);
         const auto est = readEst(a);
-        e.estimator = readEstimator(a, est);
-        e.estimate = std::visit([](auto& x) { return x.estimate(); }, e.estimator);
+        e.estimator = readEstimator(a, version, est);
+        // v3 keeps the cached estimate as written (under samples_visit it is
+        // the spread one, not the estimator's own).
+        e.estimate = version >= 3 ? est : e.estimator->estimate();
         if (version >= 2) {
             e.sample = readPts(a);
             e.visitStartSample = readPts(a);
@@ -159,13 +156,14 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
 }  // namespace
 
 uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
-    return 2;
+    // 3: estimators by registry name with their own compact state.
+    return 3;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << genericMapParams;
     const auto& io = insertionOptions;
-    out.WriteAs<uint8_t>(static_cast<uint8_t>(io.estimator));
+    out << io.estimator;  // v3: a registry name (v0-2: 0 / 1)
     out.WriteAs<uint64_t>(io.numParticles);
     out.WriteAs<uint64_t>(io.lag);
     out << io.smootherStepSigma << io.rougheningSigma << io.essThreshold;
@@ -195,10 +193,16 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
     switch (version) {
         case 0:
         case 1:
-        case 2: {
+        case 2:
+        case 3: {
             in >> genericMapParams;
             auto& io = insertionOptions;
-            io.estimator = static_cast<TTagEstimatorKind>(in.ReadAs<uint8_t>());
+            if (version >= 3)
+                io.estimator = readBoundedString(in, kWhat);
+            else
+                io.estimator = in.ReadAs<uint8_t>() == 0
+                                   ? rfir::models::kParticleFilterName
+                                   : rfir::models::kFixedLagSmootherName;
             io.numParticles = in.ReadAs<uint64_t>();
             io.lag = in.ReadAs<uint64_t>();
             in >> io.smootherStepSigma >> io.rougheningSigma >> io.essThreshold;
@@ -318,10 +322,7 @@ void CRFIDTagParticleMap::getVisualizationInto(
 std::string CRFIDTagParticleMap::asString() const {
     std::ostringstream s;
     s << "rfir::maps::CRFIDTagParticleMap: " << m_tags.size() << " tags, "
-      << m_landmarks.size() << " landmarks ("
-      << (insertionOptions.estimator == TTagEstimatorKind::ParticleFilter
-              ? "particle_filter"
-              : "fixed_lag_smoother")
+      << m_landmarks.size() << " landmarks (" << insertionOptions.estimator
       << ", L=" << insertionOptions.numParticles << ")";
     return s.str();
 }

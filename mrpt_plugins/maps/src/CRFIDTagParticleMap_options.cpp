@@ -4,7 +4,9 @@
 
 #include <mrpt/core/bits_math.h>
 
+#include <algorithm>
 #include <ostream>
+#include <stdexcept>
 
 using namespace rfir::maps;
 
@@ -12,8 +14,6 @@ MAP_DEFINITION_REGISTER("rfir::maps::CRFIDTagParticleMap,rfidTagMap",
                         rfir::maps::CRFIDTagParticleMap)
 
 namespace {
-const std::vector<std::string> kEstimatorNames = {"particle_filter",
-                                                  "fixed_lag_smoother"};
 const std::vector<std::string> kResamplingNames = {"systematic", "stratified",
                                                    "multinomial"};
 const std::vector<std::string> kModelNames = {"step", "gaussian"};
@@ -35,8 +35,13 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
     const mrpt::config::CConfigFileBase& c, const std::string& s) {
     using rfir::ini::TRange;
     const rfir::ini::CIniSection sec(c, s, allowedKeys());
-    estimator = static_cast<TTagEstimatorKind>(
-        sec.getEnum("estimator", kEstimatorNames, static_cast<size_t>(estimator)));
+    // Any registered estimator (one file and one registration line each).
+    const auto names = rfir::models::tagEstimatorNames();
+    const auto at = std::find(names.begin(), names.end(), estimator);
+    if (at == names.end())
+        throw std::invalid_argument("CRFIDTagParticleMap: estimator '" + estimator +
+                                    "' set in code is not registered");
+    estimator = names[sec.getEnum("estimator", names, size_t(at - names.begin()))];
     numParticles = size_t(sec.getInt("num_particles", int64_t(numParticles), 1, 1000000));
     lag = size_t(sec.getInt("lag", int64_t(lag), 1, 100000));
     // Sizes in metres: 10 m is far beyond any reader footprint or tag spread.
@@ -55,8 +60,7 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
-    o << "estimator           = " << kEstimatorNames[static_cast<size_t>(estimator)]
-      << "\n"
+    o << "estimator           = " << estimator << "\n"
       << "num_particles       = " << numParticles << "\n"
       << "lag                 = " << lag << "\n"
       << "smoother_step_sigma = " << smootherStepSigma << "\n"

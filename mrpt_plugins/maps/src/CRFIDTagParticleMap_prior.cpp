@@ -59,7 +59,7 @@ void CRFIDTagParticleMap::loadPriorFromTextFile(const std::string& path) {
         for (auto& p : pts)
             p = {r.x + r.sx * rng.drawGaussian1D_normalized(),
                  r.y + r.sy * rng.drawGaussian1D_normalized()};
-        std::visit([&](auto& est) { est.initFromPoints(pts); }, e.estimator);
+        e.estimator->initFromPoints(pts);
         // Seen once: a prior entry is a known landmark, not a first visit.
         e.visits = 1;
         CRFIDTagParticleMapImpl::refresh(*this, e);

@@ -270,9 +270,8 @@ std::shared_ptr<TTagMapSettings> loadTagMapOptions(
     // The estimator follows the method (per-tag filters for pf, smoothers for
     // ps) and the map's draws the run's --seed: keys saying otherwise are
     // refused rather than silently overridden.
-    const auto kind = method == TMethod::PS
-                          ? rfir::maps::TTagEstimatorKind::FixedLagSmoother
-                          : rfir::maps::TTagEstimatorKind::ParticleFilter;
+    const std::string kind = method == TMethod::PS ? rfir::models::kFixedLagSmootherName
+                                                   : rfir::models::kParticleFilterName;
     if (ini.sectionExists("tagmap") && ini.keyExists("tagmap", "seed"))
         rfir::ini::fail(ini, "tagmap", "seed",
                         "the run's --seed seeds the tag map; remove this key");

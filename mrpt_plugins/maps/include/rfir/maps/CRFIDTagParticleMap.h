@@ -5,8 +5,7 @@
 
 #include <rfir/models/detection_likelihood.h>
 #include <rfir/models/range_bearing.h>
-#include <rfir/models/tag_fixed_lag_smoother.h>
-#include <rfir/models/tag_particle_filter.h>
+#include <rfir/models/tag_estimator.h>
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/CMetricMap.h>
@@ -15,15 +14,9 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
-#include <variant>
 #include <vector>
 
 namespace rfir::maps {
-enum class TTagEstimatorKind {
-    ParticleFilter,   //!< INI "particle_filter" (PF-SLAM)
-    FixedLagSmoother  //!< INI "fixed_lag_smoother" (PS-SLAM)
-};
-
 /** How re-reads of a tag weigh the robot (see docs/tag-maps.md). */
 enum class TRobotUpdatePolicy {
     /** INI "literal": the seeds' Algorithm 1: update the tag first, then weigh
@@ -73,14 +66,11 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     DEFINE_SERIALIZABLE(CRFIDTagParticleMap, rfir::maps)
 
   public:
-    using TEstimator =
-        std::variant<rfir::models::TagParticleFilter, rfir::models::TagFixedLagSmoother>;
-
     /** One mapped tag or landmark. */
     struct TTagEntry {
         std::string id;
-        TEstimator estimator;
-        rfir::models::PointEstimate estimate;  //!< cached from the estimator
+        rfir::models::CTagEstimatorPtr estimator;  //!< per [tagmap] estimator
+        rfir::models::PointEstimate estimate;      //!< cached from the estimator
         /** Estimate frozen at the start of the current visit (RevisitAll). */
         rfir::models::PointEstimate visitStartEstimate;
         /** K tag particles for the robot likelihood (TagParticles), refreshed
@@ -95,7 +85,11 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         uint64_t visits = 0;        //!< number of visits (first pass = 1)
         uint64_t lastReadStep = 0;  //!< index (1-based) of the last observation read in
         double lastReadTravel = 0;  //!< robot path length (m) at that observation
-        const std::vector<mrpt::math::TPoint2D>& particles() const;
+        std::vector<mrpt::math::TPoint2D> particles() const {
+            return estimator->particles();
+        }
+        /** Bytes this entry owns (estimator and containers, by capacity). */
+        size_t memoryBytes() const;
     };
 
     CRFIDTagParticleMap();
@@ -106,6 +100,9 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     const TTagEntry* getLandmark(const std::string& id) const;
     size_t tagCount() const { return m_tags.size(); }
     size_t landmarkCount() const { return m_landmarks.size(); }
+    /** Bytes the tag and landmark tables own: entries, estimators, hash nodes
+     * and buckets (counted by capacity; allocator headers not included). */
+    size_t memoryBytes() const;
     /** All tags / landmarks, sorted by ID (for output; O(N log N)). */
     std::vector<const TTagEntry*> tags() const;
     std::vector<const TTagEntry*> landmarks() const;
@@ -202,7 +199,8 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     std::string asString() const override;
 
     struct TInsertionOptions : public mrpt::config::CLoadableOptions {
-        TTagEstimatorKind estimator = TTagEstimatorKind::ParticleFilter;
+        /** estimator: a registered name (rfir::models::tagEstimatorNames()). */
+        std::string estimator = rfir::models::kParticleFilterName;
         size_t numParticles = 100;         //!< num_particles (L)
         size_t lag = 25;                   //!< lag (smoother)
         double smootherStepSigma = 0.001;  //!< smoother_step_sigma (m)

@@ -2,15 +2,10 @@
  * 004 Algorithm 1, thesis Algorithm 2 and eq. 4.4-4.5). */
 #pragma once
 
-#include <rfir/models/detection_likelihood.h>
-#include <rfir/models/particle_stats.h>
-#include <rfir/models/resampling.h>
-
-#include <mrpt/random/RandomGenerators.h>
-#include <rfir/models/random.h>
+#include <rfir/models/anchored_points.h>
+#include <rfir/models/tag_estimator.h>
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace rfir::models {
@@ -23,62 +18,89 @@ struct TagFixedLagSmootherParams {
     ResamplingScheme resampling = ResamplingScheme::Systematic;
 };
 
-/** Every particle carries its last `lag` states in a ring buffer; histories
- * travel with their particles on resampling. The smoothed particle is the mean
- * of its stored states; the estimate is built from the smoothed set. */
-class TagFixedLagSmoother {
+/** Every particle has its last `lag` states; the smoothed particle is their
+ * mean, the estimate is built from the smoothed set.
+ *
+ * Storage without the histories (9 + lag bytes per particle at J <= 256
+ * instead of 16 lag): a state is its ancestor's plus a step drawn from a
+ * counter-based stream (tag stream, slot, particle), so a past step is drawn
+ * again instead of stored. Per particle: the current state, the integer sum
+ * of its stored states, its oldest stored state, and for every stored slot the
+ * index it had in that slot (the ancestry; it travels with the particle on
+ * resampling, so resampled particles share their history prefix). When the
+ * window slides, the oldest state advances to the next slot by that slot's
+ * step, and leaves the sum exactly (integers, no drift). */
+class TagFixedLagSmoother : public CTagEstimator {
   public:
     using Params = TagFixedLagSmootherParams;
 
     TagFixedLagSmoother() = default;
     explicit TagFixedLagSmoother(const Params& p) : m_p(p) {}
 
-    /** First detection: uniform over the reader's rectangle; stores the
-     * initial states as the first history entry (Alg. 2 lines 6-8). */
-    void initUniform(const mrpt::math::TPose2D& robot, const ReaderArea& reader,
-                     rfir::models::TRandom& rng);
-    void initFromPoints(std::vector<mrpt::math::TPoint2D> pts);
-
+    const char* name() const override { return kFixedLagSmootherName; }
+    std::unique_ptr<CTagEstimator> clone() const override {
+        return std::make_unique<TagFixedLagSmoother>(*this);
+    }
+    /** Alg. 2 lines 6-8: the initial states are the first stored ones. The
+     * tag's step stream is seeded from them (deterministic, no generator). */
+    void initFromPoints(const std::vector<mrpt::math::TPoint2D>& pts) override;
     /** Re-detection (Alg. 2 lines 10-24): random step, weigh, store, resample
      * with histories, smooth, estimate. */
-    void update(const PointLogLikelihood& logLik, rfir::models::TRandom& rng);
+    void update(const PointLogLikelihood& logLik, TRandom& rng) override;
+    /** Moves particle j by f(j, .): its current state exactly, its stored
+     * states through their sum (exact for f affine per j, as the map's rigid
+     * samples_visit commit). The states stored before the move then leave
+     * the window as their mean, one per update: the sum is exact again once
+     * they are all out (lag - 1 updates later). */
+    void moveStates(const TStateMove& f) override;
 
-    /** Moves particle j and its whole stored history by f(j, state) and
-     * refreshes the estimate. */
-    void moveStates(
-        const std::function<mrpt::math::TPoint2D(size_t, const mrpt::math::TPoint2D&)>&
-            f);
-
-    const PointEstimate& estimate() const { return m_est; }
-    /** Current (filtered) states. */
-    const std::vector<mrpt::math::TPoint2D>& particles() const { return m_pts; }
-    /** Smoothed particles (mean of each particle's stored states). */
-    std::vector<mrpt::math::TPoint2D> smoothedParticles() const;
-    /** Stored states of particle j, oldest first. */
+    const PointEstimate& estimate() const override { return m_est; }
+    std::vector<mrpt::math::TPoint2D> particles() const override;
+    std::vector<mrpt::math::TPoint2D> smoothedParticles() const override;
+    /** Stored states of particle j, oldest first (rebuilt from the stream). */
     std::vector<mrpt::math::TPoint2D> history(size_t j) const;
     size_t storedStates() const { return m_count; }
+    size_t size() const override { return m_cur.size(); }
+    size_t numParticles() const override { return m_p.numParticles; }
+    uint64_t updateCount() const override { return m_updates; }
+    size_t memoryBytes() const override;
     const Params& params() const { return m_p; }
-    uint64_t updateCount() const { return m_updates; }
-    bool empty() const { return m_pts.empty(); }
 
-    /** Raw ring buffer (row j = particle j, `lag` slots) for serialization. */
-    const std::vector<mrpt::math::TPoint2D>& rawHistory() const { return m_hist; }
-    size_t rawHead() const { return m_head; }
-    void setState(const Params& p, std::vector<mrpt::math::TPoint2D> pts,
-                  std::vector<mrpt::math::TPoint2D> hist, size_t head, size_t count,
-                  uint64_t updates);
+    void writeState(mrpt::serialization::CArchive& out) const override;
+    void readState(mrpt::serialization::CArchive& in) override;
+    /** Restores a state stored as whole histories (the map's version 0-2
+     * streams: row j = particle j's ring of `lag` slots); the stored states
+     * are kept through their sums, as after moveStates. Throws on bad sizes. */
+    void setLegacyState(const Params& p, const std::vector<mrpt::math::TPoint2D>& pts,
+                        const std::vector<mrpt::math::TPoint2D>& hist, size_t head,
+                        size_t count, uint64_t updates);
 
   private:
-    void pushStates();
+    uint32_t chain(size_t j, size_t ring) const;
+    void setChain(size_t j, size_t ring, uint32_t v);
+    /** The state of particle j's ancestry in slot u, given `o`, its state in
+     * slot u - 1. */
+    TQPoint advance(const TQPoint& o, uint64_t u, size_t j) const;
+    /** Replaces particle j's stored states by states of the same sum: the
+     * older ones by their mean (kept in m_old), the newest by m_cur[j]. */
+    void freeze(const std::vector<int64_t>& sums);
+    void resampleRows(const std::vector<size_t>& idx);
     void recomputeEstimate();
+    void seedStream();
 
     Params m_p;
-    std::vector<mrpt::math::TPoint2D> m_pts;   //!< current states
-    std::vector<mrpt::math::TPoint2D> m_hist;  //!< numParticles x lag ring rows
-    size_t m_head = 0;                         //!< next slot to write
-    size_t m_count = 0;                        //!< stored states per particle (<= lag)
+    TAnchor m_anchor;
+    uint64_t m_stream = 0;         //!< the tag's step stream
+    std::vector<TQPoint> m_cur;    //!< current states
+    std::vector<int64_t> m_sum;    //!< per particle: sum x, sum y of stored states
+    std::vector<TQPoint> m_old;    //!< per particle: oldest stored state
+    std::vector<TQPoint> m_base;   //!< per particle: state in slot m_frozen (if frozen)
+    std::vector<uint8_t> m_chain;  //!< J x lag ring of indices, m_width bytes each
+    uint8_t m_width = 1;
+    size_t m_count = 0;     //!< stored states per particle (<= lag)
+    uint64_t m_frozen = 0;  //!< slots before it hold their mean (see freeze)
     PointEstimate m_est;
-    uint64_t m_updates = 0;
+    uint64_t m_updates = 0;  //!< also the newest slot's number
 };
 
 }  // namespace rfir::models

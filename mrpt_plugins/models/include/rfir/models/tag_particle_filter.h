@@ -2,15 +2,10 @@
  * 6-18, thesis Algorithm 1). */
 #pragma once
 
-#include <rfir/models/detection_likelihood.h>
-#include <rfir/models/particle_stats.h>
-#include <rfir/models/resampling.h>
-
-#include <mrpt/random/RandomGenerators.h>
-#include <rfir/models/random.h>
+#include <rfir/models/anchored_points.h>
+#include <rfir/models/tag_estimator.h>
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace rfir::models {
@@ -24,50 +19,56 @@ struct TagParticleFilterParams {
     double rougheningSigma = 0.0;
 };
 
-/** Independent particle set for one static 2D point (a tag or landmark). */
-class TagParticleFilter {
+/** Independent particle set for one static 2D point (a tag or landmark).
+ * Storage: 8 bytes per particle (anchored offsets) plus 4 per log-weight only
+ * while the weights are not uniform (ess_threshold < 1). */
+class TagParticleFilter : public CTagEstimator {
   public:
     using Params = TagParticleFilterParams;
 
     TagParticleFilter() = default;
     explicit TagParticleFilter(const Params& p) : m_p(p) {}
 
-    /** First detection: L particles uniform over the reader's rectangle placed
-     * by the robot pose (weight 1). */
-    void initUniform(const mrpt::math::TPose2D& robot, const ReaderArea& reader,
-                     rfir::models::TRandom& rng);
-    /** First detection from given samples (e.g. a range-bearing inverse model);
-     * the particle count becomes pts.size(). */
-    void initFromPoints(std::vector<mrpt::math::TPoint2D> pts);
-
+    const char* name() const override { return kParticleFilterName; }
+    std::unique_ptr<CTagEstimator> clone() const override {
+        return std::make_unique<TagParticleFilter>(*this);
+    }
+    void initFromPoints(const std::vector<mrpt::math::TPoint2D>& pts) override;
     /** Re-detection: weigh every particle by logLik, take the weighted mean as
      * the estimate (line 13), then resample (lines 14-18). */
-    void update(const PointLogLikelihood& logLik, rfir::models::TRandom& rng);
+    void update(const PointLogLikelihood& logLik, TRandom& rng) override;
+    /** Moves particle j to f(j, particle j) (keeps the weights). */
+    void moveStates(const TStateMove& f) override;
 
-    /** Moves particle j to f(j, particle j) (keeps the weights) and refreshes
-     * the estimate: e.g. a tag mapped relative to the robot placed by a robot
-     * pose drawn per particle. */
-    void moveStates(
-        const std::function<mrpt::math::TPoint2D(size_t, const mrpt::math::TPoint2D&)>&
-            f);
-
-    const PointEstimate& estimate() const { return m_est; }
-    const std::vector<mrpt::math::TPoint2D>& particles() const { return m_pts; }
-    const std::vector<double>& logWeights() const { return m_logW; }
+    const PointEstimate& estimate() const override { return m_est; }
+    std::vector<mrpt::math::TPoint2D> particles() const override;
+    std::vector<mrpt::math::TPoint2D> smoothedParticles() const override {
+        return particles();
+    }
+    /** Log-weights (all 0 after a resampling). */
+    std::vector<double> logWeights() const;
+    size_t size() const override { return m_pts.size(); }
+    size_t numParticles() const override { return m_p.numParticles; }
+    uint64_t updateCount() const override { return m_updates; }
+    size_t memoryBytes() const override;
     const Params& params() const { return m_p; }
-    uint64_t updateCount() const { return m_updates; }
-    bool empty() const { return m_pts.empty(); }
 
-    /** Restores a serialized state; throws if sizes disagree. The estimate is
-     * given because it was taken before the last resampling (line 13). */
-    void setState(const Params& p, std::vector<mrpt::math::TPoint2D> pts,
-                  std::vector<double> logW, uint64_t updates,
+    void writeState(mrpt::serialization::CArchive& out) const override;
+    void readState(mrpt::serialization::CArchive& in) override;
+    /** Restores a state (also the map's version 0-2 streams); throws if sizes
+     * disagree. The estimate is given because it was taken before the last
+     * resampling (line 13). */
+    void setState(const Params& p, const std::vector<mrpt::math::TPoint2D>& pts,
+                  const std::vector<double>& logW, uint64_t updates,
                   const PointEstimate& estimate);
 
   private:
+    PointEstimate computeEstimate() const;
+
     Params m_p;
-    std::vector<mrpt::math::TPoint2D> m_pts;
-    std::vector<double> m_logW;
+    TAnchor m_anchor;
+    std::vector<TQPoint> m_pts;
+    std::vector<float> m_logW;  //!< empty = uniform (the common case)
     PointEstimate m_est;
     uint64_t m_updates = 0;
 };

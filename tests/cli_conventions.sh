@@ -4,7 +4,10 @@
 # directory, with --help, --version, an unknown option, malformed numbers and
 # a missing required option. Checks the exit codes (0, 0, then non-zero), that
 # a bad number is reported naming its option, and that nothing was written:
-# the directory stays empty and no file under SRC/docs changes.
+# the directory stays empty and no file under SRC/docs changes. Then bad
+# --set edits in every program that takes --set (the same checks, and the
+# message names the section or key), and -q on short real runs (nothing on
+# stdout, nothing but warnings on stderr).
 #   bash tests/cli_conventions.sh BIN SRC
 set -uo pipefail
 BIN=$(cd "$1" && pwd)
@@ -136,6 +139,63 @@ for exe in "$BIN"/rfir-*; do
     run "$prog" nonzero "${missing[@]}"
   fi
 done
+
+# --set: a malformed edit, an unknown section, an unknown key and a bad value
+# (each EDIT@WORD: the message must name WORD) exit non-zero before any work,
+# writing nothing, in every program that takes --set.
+declare -A SETS
+SETS[rfir-slam]="slam_particles=5@slam_particles nosuch.k=1@nosuch
+  slam.no_such_key=1@no_such_key slam.robot_particles=abc@robot_particles"
+SETS[rfir-localize]="localization=5@localization nosuch.k=1@nosuch
+  localization.no_such_key=1@no_such_key localization.num_particles=1.5@num_particles"
+SETS[rfir-sim]="speed=0.3@speed nosuch.k=1@nosuch trajectory.no_such_key=1@no_such_key
+  trajectory.speed=abc@speed"
+SETS[rfir-experiments]="slam_particles=5@slam_particles nosuch.k=1@nosuch
+  slam.no_such_key=1@no_such_key trajectory.speed=abc@speed kidnap.enabled=true@kidnap
+  slam:trajectory.speed=1@trajectory"
+SETS[rfir-ir-experiments]="localization=5@localization nosuch.k=1@nosuch
+  trajectory.no_such_key=1@no_such_key localization.num_particles=abc@num_particles"
+SETS[rfir-bench]="slam_particles=5@slam_particles nosuch.k=1@nosuch
+  tagmap.no_such_key=1@no_such_key trajectory.speed=abc@speed
+  slam.robot_particles=50@robot_particles"
+for prog in "${!SETS[@]}"; do
+  [ -x "$BIN/$prog" ] || { fail "$prog: not built"; continue; }
+  read -r -a base <<<"${BASE[$prog]}"
+  for item in ${SETS[$prog]}; do
+    edit=${item%@*} word=${item##*@}
+    run "$prog" nonzero "${base[@]}" --set "$edit"
+    grep -q -- "$word" <<<"$last_err" ||
+      fail "$prog --set '$edit': the message does not name '$word': $last_err"
+  done
+done
+
+# -q on short real runs: exit 0, outputs written, nothing on stdout, and
+# nothing on stderr but warnings.
+quiet_run() {
+  local prog=$1
+  shift
+  local wd
+  wd=$(mktemp -d "$root/wd_XXXXXX")
+  (cd "$wd" && timeout 120 "$BIN/$prog" "$@" >"$root/stdout" 2>"$root/stderr")
+  local code=$?
+  local what="$prog $*"
+  [ $code -eq 0 ] || fail "$what: exit $code: $(head -c 400 "$root/stderr")"
+  [ -s "$root/stdout" ] && fail "$what: printed on stdout: $(head -c 200 "$root/stdout")"
+  grep -v -i "warning" "$root/stderr" | grep -q . &&
+    fail "$what: printed on stderr: $(head -c 200 "$root/stderr")"
+  [ -n "$(ls -A "$wd")" ] || fail "$what: wrote nothing"
+  rm -rf "$wd"
+}
+quiet_run rfir-slam --rawlog "$DS/rfid_60mm_16tags_loop.rawlog" --out-dir out --method pf \
+  --set slam.robot_particles=30 -q
+quiet_run rfir-localize --rawlog "$DS/ir_raw_15s.rawlog" --emitters "$DS/ir_raw_15s.gt_map.txt" \
+  --out-dir out --set localization.num_particles=200 -q
+quiet_run rfir-sim --config "$CFG/sim_kidnap.ini" --out-dir out \
+  --set simulation.max_duration=5 -q
+quiet_run rfir-eval --path "$DS/rfid_kidnap.gt.tum" --gt-path "$DS/rfid_kidnap.gt.tum" \
+  --json-file out.json -q
+quiet_run rfir-import --input "$SRC/tests/data/textlog/full.txt" --output out.rawlog -q
+quiet_run rfir-ids plan --room "0 0 3.2 2.4" --output out.txt -q
 
 [ $n -ge 9 ] || fail "found only $n programs in $BIN"
 [ "$(docs_hash)" = "$before" ] || fail "a file under $SRC/docs changed"

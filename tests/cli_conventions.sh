@@ -145,10 +145,45 @@ basic_checks() {
   [ $n -ge 9 ] || fail "found only $n programs in $BIN"
 }
 
-option_checks() {
-  # --set: a malformed edit, an unknown section, an unknown key and a bad value
-  # (each EDIT@WORD: the message must name WORD) exit non-zero before any work,
-  # writing nothing, in every program that takes --set.
+# quiet_run PROGRAM ARGS...: a short real run in a fresh directory: exit 0,
+# something written, nothing on stdout, nothing on stderr but warnings.
+quiet_run() {
+  local prog=$1
+  shift
+  local wd
+  wd=$(mktemp -d "$root/wd_XXXXXX")
+  (cd "$wd" && timeout 120 "$BIN/$prog" "$@" >"$root/stdout" 2>"$root/stderr")
+  local code=$?
+  local what="$prog $*"
+  [ $code -eq 0 ] || fail "$what: exit $code: $(head -c 400 "$root/stderr")"
+  [ -s "$root/stdout" ] && fail "$what: printed on stdout: $(head -c 200 "$root/stdout")"
+  grep -v -i "warning" "$root/stderr" | grep -q . &&
+    fail "$what: printed on stderr: $(head -c 200 "$root/stderr")"
+  [ -n "$(ls -A "$wd")" ] || fail "$what: wrote nothing"
+  rm -rf "$wd"
+}
+
+# exp_run PROGRAM DIR ARGS...: an experiment program with -q into $root/DIR.
+exp_run() {
+  local prog=$1 d=$2
+  shift 2
+  (cd "$root" && timeout 300 "$BIN/$prog" -q --out-dir "$d" "$@" >"$root/stdout" 2>"$root/stderr") ||
+    fail "$prog $*: exit $?: $(head -c 300 "$root/stderr")"
+  [ -s "$root/stdout" ] && fail "$prog -q $*: printed on stdout"
+}
+
+# results.json of $root/DIR without what changes from run to run (times, the
+# command line, the edits).
+numbers() {
+  sed -E 's/"(command|wall_seconds|ms_per_step|max_step_ms|total_s|ini_edits)":(\[[^]]*\]|"[^"]*"|[^,]*),?//g' \
+    "$root/$1/results.json"
+}
+ir_md() { sed '/^Run time:/d' "$root/$1/results_ir.md" 2>/dev/null; }
+
+# --set: a malformed edit, an unknown section, an unknown key and a bad value
+# (each EDIT@WORD: the message must name WORD) exit non-zero before any work,
+# writing nothing, in every program that takes --set.
+bad_set_checks() {
   declare -A SETS
   SETS[rfir-slam]="slam_particles=5@slam_particles nosuch.k=1@nosuch
     slam.no_such_key=1@no_such_key slam.robot_particles=abc@robot_particles"
@@ -174,82 +209,74 @@ option_checks() {
         fail "$prog --set '$edit': the message does not name '$word': $last_err"
     done
   done
-
-  # -q on short real runs: exit 0, outputs written, nothing on stdout, and
-  # nothing on stderr but warnings.
-  quiet_run() {
-    local prog=$1
-    shift
-    local wd
-    wd=$(mktemp -d "$root/wd_XXXXXX")
-    (cd "$wd" && timeout 120 "$BIN/$prog" "$@" >"$root/stdout" 2>"$root/stderr")
-    local code=$?
-    local what="$prog $*"
-    [ $code -eq 0 ] || fail "$what: exit $code: $(head -c 400 "$root/stderr")"
-    [ -s "$root/stdout" ] && fail "$what: printed on stdout: $(head -c 200 "$root/stdout")"
-    grep -v -i "warning" "$root/stderr" | grep -q . &&
-      fail "$what: printed on stderr: $(head -c 200 "$root/stderr")"
-    [ -n "$(ls -A "$wd")" ] || fail "$what: wrote nothing"
-    rm -rf "$wd"
 }
-quiet_run rfir-slam --rawlog "$DS/rfid_60mm_16tags_loop.rawlog" --out-dir out --method pf \
-  --set slam.robot_particles=30 -q
-quiet_run rfir-localize --rawlog "$DS/ir_raw_15s.rawlog" --emitters "$DS/ir_raw_15s.gt_map.txt" \
-  --out-dir out --set localization.num_particles=200 -q
-quiet_run rfir-sim --config "$CFG/sim_kidnap.ini" --out-dir out \
-  --set simulation.max_duration=5 -q
-quiet_run rfir-eval --path "$DS/rfid_kidnap.gt.tum" --gt-path "$DS/rfid_kidnap.gt.tum" \
-  --json-file out.json -q
-quiet_run rfir-import --input "$SRC/tests/data/textlog/full.txt" --output out.rawlog -q
-quiet_run rfir-ids plan --room "0 0 3.2 2.4" --output out.txt -q
+
+# -q on short real runs of every program but the experiment ones (below).
+quiet_checks() {
+  quiet_run rfir-slam --rawlog "$DS/rfid_60mm_16tags_loop.rawlog" --out-dir out --method pf \
+    --set slam.robot_particles=30 -q
+  quiet_run rfir-localize --rawlog "$DS/ir_raw_15s.rawlog" --emitters "$DS/ir_raw_15s.gt_map.txt" \
+    --out-dir out --set localization.num_particles=200 -q
+  quiet_run rfir-sim --config "$CFG/sim_kidnap.ini" --out-dir out \
+    --set simulation.max_duration=5 -q
+  quiet_run rfir-eval --path "$DS/rfid_kidnap.gt.tum" --gt-path "$DS/rfid_kidnap.gt.tum" \
+    --json-file out.json -q
+  quiet_run rfir-import --input "$SRC/tests/data/textlog/full.txt" --output out.rawlog -q
+  quiet_run rfir-ids plan --room "0 0 3.2 2.4" --output out.txt -q
+  local bench=(--quick --no-realtime --m 100 --n 10 --methods ps --updates 5 --rounds 1
+    --set tagmap.num_particles=20)
+  quiet_run rfir-bench "${bench[@]}" --out-dir out -q
+  exp_run rfir-bench bench "${bench[@]}"
+  grep -qF '"ini_edits": ["tagmap.num_particles=20"]' "$root/bench/benchmark.json" ||
+    fail "rfir-bench --set: not in benchmark.json's ini_edits"
+}
 
 # --set and --seed reach the runs. rfir-experiments: a simulation edit (10 s
 # runs: 101 steps each) and a first seed, recorded in results.json and
 # results.md; the same command again gives the same numbers, a SLAM edit
 # other ones. rfir-ir-experiments: --seed 1 is the default, --seed 3 and a
 # localization edit give other numbers, recorded in the header.
-exp_run() { # PROGRAM DIR ARGS...
-  local prog=$1 d=$2
-  shift 2
-  (cd "$root" && timeout 300 "$BIN/$prog" -q --out-dir "$d" "$@" >"$root/stdout" 2>"$root/stderr") ||
-    fail "$prog $*: exit $?: $(head -c 300 "$root/stderr")"
-  [ -s "$root/stdout" ] && fail "$prog -q $*: printed on stdout"
+experiment_checks() {
+  local ex=(--quick --rows t31_16 --no-figures --set simulation.max_duration=10)
+  exp_run rfir-experiments e1 "${ex[@]}" --seed 3
+  exp_run rfir-experiments e2 "${ex[@]}" --seed 3
+  exp_run rfir-experiments e3 "${ex[@]}" --seed 3 --set slam.robot_particles=5
+  local j
+  j=$(cat "$root/e1/results.json" 2>/dev/null)
+  grep -qF '"seeds":[3],' <<<"$j" || fail "rfir-experiments --seed 3: seeds not [3] in results.json"
+  grep -qF '"ini_edits":["simulation.max_duration=10"]' <<<"$j" ||
+    fail "rfir-experiments --set: not in results.json's ini_edits"
+  [ "$(grep -o '"steps":[0-9]*' <<<"$j" | sort -u)" = '"steps":101' ] ||
+    fail "rfir-experiments --set simulation.max_duration=10: not 101 steps per run"
+  grep -qF '`simulation.max_duration=10`' "$root/e1/results.md" ||
+    fail "rfir-experiments --set: not in the results.md header"
+  [ "$(numbers e1)" = "$(numbers e2)" ] || fail "rfir-experiments: the same command, other numbers"
+  [ "$(numbers e1)" != "$(numbers e3)" ] ||
+    fail "rfir-experiments --set slam.robot_particles=5: the same numbers"
+
+  local ir=(--quick --only rotation)
+  exp_run rfir-ir-experiments i1 "${ir[@]}"
+  exp_run rfir-ir-experiments i2 "${ir[@]}" --seed 1
+  exp_run rfir-ir-experiments i3 "${ir[@]}" --seed 3
+  exp_run rfir-ir-experiments i4 "${ir[@]}" --seed 3 --set localization.num_particles=300
+  [ "$(ir_md i1)" = "$(ir_md i2)" ] || fail "rfir-ir-experiments --seed 1 is not the default"
+  [ "$(ir_md i1 | sed 's/seed 1/seed 3/')" != "$(ir_md i3 | sed 's/ --seed 3//')" ] ||
+    fail "rfir-ir-experiments --seed 3: the same numbers as seed 1"
+  grep -qF -- "--seed 3," "$root/i3/results_ir.md" ||
+    fail "rfir-ir-experiments --seed 3: not in the header"
+  grep -qF "Loop with rotations, seed 3" "$root/i3/results_ir.md" ||
+    fail "rfir-ir-experiments --seed 3: the figure is not seed 3's"
+  # Past the header (which names the edit): the tables differ.
+  [ "$(ir_md i3 | sed 1,4d)" != "$(ir_md i4 | sed 1,4d)" ] ||
+    fail "rfir-ir-experiments --set localization.num_particles=300: the same numbers"
+  grep -qF -- "--set localization.num_particles=300" "$root/i4/results_ir.md" ||
+    fail "rfir-ir-experiments --set: not in the header"
 }
-# results.json without what changes from run to run (times, the command).
-numbers() {
-  sed -E 's/"(command|wall_seconds|ms_per_step|max_step_ms|total_s|ini_edits)":(\[[^]]*\]|"[^"]*"|[^,]*),?//g' "$root/$1/results.json"
-}
-ex=(--quick --rows t31_16 --no-figures --set simulation.max_duration=10)
-exp_run rfir-experiments e1 "${ex[@]}" --seed 3
-exp_run rfir-experiments e2 "${ex[@]}" --seed 3
-exp_run rfir-experiments e3 "${ex[@]}" --seed 3 --set slam.robot_particles=5
-j=$(cat "$root/e1/results.json" 2>/dev/null)
-grep -qF '"seeds":[3],' <<<"$j" || fail "rfir-experiments --seed 3: seeds not [3] in results.json"
-grep -qF '"ini_edits":["simulation.max_duration=10"]' <<<"$j" ||
-  fail "rfir-experiments --set: not in results.json's ini_edits"
-[ "$(grep -o '"steps":[0-9]*' <<<"$j" | sort -u)" = '"steps":101' ] ||
-  fail "rfir-experiments --set simulation.max_duration=10: not 101 steps per run"
-grep -qF '`simulation.max_duration=10`' "$root/e1/results.md" ||
-  fail "rfir-experiments --set: not in the results.md header"
-[ "$(numbers e1)" = "$(numbers e2)" ] || fail "rfir-experiments: the same command, other numbers"
-[ "$(numbers e1)" != "$(numbers e3)" ] ||
-  fail "rfir-experiments --set slam.robot_particles=5: the same numbers"
-ir_md() { sed '/^Run time:/d' "$root/$1/results_ir.md" 2>/dev/null; }
-ir=(--quick --only rotation)
-exp_run rfir-ir-experiments i1 "${ir[@]}"
-exp_run rfir-ir-experiments i2 "${ir[@]}" --seed 1
-exp_run rfir-ir-experiments i3 "${ir[@]}" --seed 3
-exp_run rfir-ir-experiments i4 "${ir[@]}" --seed 3 --set localization.num_particles=300
-[ "$(ir_md i1)" = "$(ir_md i2)" ] || fail "rfir-ir-experiments --seed 1 is not the default"
-[ "$(ir_md i1 | sed 's/seed 1/seed 3/')" != "$(ir_md i3 | sed 's/ --seed 3//')" ] ||
-  fail "rfir-ir-experiments --seed 3: the same numbers as seed 1"
-grep -qF -- "--seed 3," "$root/i3/results_ir.md" || fail "rfir-ir-experiments --seed 3: not in the header"
-grep -qF "Loop with rotations, seed 3" "$root/i3/results_ir.md" ||
-  fail "rfir-ir-experiments --seed 3: the figure is not seed 3's"
-[ "$(ir_md i3 | sed 1,4d)" != "$(ir_md i4 | sed 1,4d)" ] ||
-  fail "rfir-ir-experiments --set localization.num_particles=300: the same numbers"
-grep -qF -- "--set localization.num_particles=300" "$root/i4/results_ir.md" ||
-  fail "rfir-ir-experiments --set: not in the header"
+
+option_checks() {
+  bad_set_checks
+  quiet_checks
+  experiment_checks
 }
 
 case ${3:-all} in

@@ -1,6 +1,7 @@
 /* Which ground-truth landmarks the robot's sensors could have seen along the
  * true path: the denominator of "mapped vs passed over". */
 #include <rfir/eval/metrics.h>
+#include <rfir/models/read_model.h>
 
 #include <algorithm>
 #include <cmath>
@@ -90,17 +91,19 @@ std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt,
     std::set<std::string> seen;
     const CGrid grid(ofKind(gt, TMapEntry::Kind::Tag), reach);
     forEachSample(gtPath, 0.25 * minHalf, reach, maxGap, [&](const CPose2D& p) {
-        const double c = std::cos(p.phi()), s = std::sin(p.phi());
+        const mrpt::math::TPose2D pose = p.asTPose();
+        const double c = std::cos(pose.phi), s = std::sin(pose.phi);
         grid.near(p.x(), p.y(), [&](const TMapEntry& tag) {
             if (seen.count(tag.id)) return;
-            // The tag in the robot frame (SPEC section 2: e = tag - reader centre).
-            const double dx = tag.x - p.x(), dy = tag.y - p.y();
-            const double lx = c * dx + s * dy, ly = -s * dx + c * dy;
-            for (const auto& r : readers)
-                if (std::abs(lx - r.x) < r.halfX && std::abs(ly - r.y) < r.halfY) {
+            // The SLAM read model (SPEC section 2: e = tag - reader centre).
+            for (const auto& r : readers) {
+                const auto e =
+                    rfir::models::readModel(pose, c, s, r.x, r.y, {tag.x, tag.y});
+                if (std::abs(e.x) < r.halfX && std::abs(e.y) < r.halfY) {
                     seen.insert(tag.id);
                     return;
                 }
+            }
         });
     });
     return seen;

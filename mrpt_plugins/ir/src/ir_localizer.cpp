@@ -1,5 +1,6 @@
 /* rfir: Monte Carlo localization on the IR emitter map (thesis Algorithm 3). */
 #include <rfir/ir/ir_localizer.h>
+#include <rfir/models/read_model.h>
 #include <rfir/obs/ir_codes.h>
 #include <rfir/obs/ir_decoder.h>
 
@@ -261,9 +262,10 @@ void CIRLocalizer::drawFromReadings(
             phi = std::atan2(q1y - q0y, q1x - q0x) - std::atan2(r1.y - r0.y, r1.x - r0.x);
         }
     }
-    const double c = std::cos(phi), s = std::sin(phi);
-    out = mrpt::math::TPose2D(q0x - (c * r0.x - s * r0.y), q0y - (s * r0.x + c * r0.y),
-                              mrpt::math::wrapToPi(phi));
+    // Receiver 0 at q0: the robot position from the read model's inverse.
+    const auto t = rfir::models::robotPositionFromRead({q0x, q0y}, std::cos(phi),
+                                                       std::sin(phi), r0.x, r0.y);
+    out = mrpt::math::TPose2D(t.x, t.y, mrpt::math::wrapToPi(phi));
 }
 
 }  // namespace rfir::ir

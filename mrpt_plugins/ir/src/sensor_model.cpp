@@ -1,26 +1,13 @@
-/* rfir: IR sensor model functors (thesis eqs. 5.1-5.3). */
+/* rfir: IR sensor model functors (thesis eqs. 5.1-5.2; eq. 5.3 is in
+ * observations, ir_voltage_curve.cpp). */
 #include <rfir/ir/sensor_model.h>
+#include <rfir/models/read_model.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace rfir::ir {
-double TVoltageCurve::visibleRadius(double h) const {
-    if (heightModel == HeightModel::Angular && h > 0) return maxDistance * h / fitHeight;
-    return maxDistance;
-}
-
-double TVoltageCurve::expected(double d, double h) const {
-    double scale = 1.0, dd = d;
-    if (heightModel != HeightModel::Fixed && h > 0)
-        scale = (fitHeight / h) * (fitHeight / h);
-    // Same angle off the LED axis: d / h = d0 / h0.
-    if (heightModel == HeightModel::Angular && h > 0) dd = d * fitHeight / h;
-    if (dd > maxDistance) return 0.0;
-    return std::max(0.0, scale * (c2 * dd * dd + c1 * dd + c0));
-}
-
 double voltageLogLikelihood(double v, double vExpected, double sigma) {
     const double e = v - vExpected;
     return -e * e / (2 * sigma * sigma);
@@ -54,8 +41,7 @@ size_t mostLikelyEmitter(const std::vector<size_t>& candidates,
 
 mrpt::math::TPoint2D receiverInWorld(const mrpt::math::TPose2D& p,
                                      const rfir::obs::TIRReceiver& r) {
-    const double c = std::cos(p.phi), s = std::sin(p.phi);
-    return {p.x + c * r.x - s * r.y, p.y + s * r.x + c * r.y};
+    return rfir::models::robotFrameToWorld(p, std::cos(p.phi), std::sin(p.phi), r.x, r.y);
 }
 
 double readingLogLikelihood(double v, const mrpt::math::TPoint2D& rcv, const TEmitter& e,

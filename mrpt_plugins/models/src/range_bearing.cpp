@@ -9,9 +9,31 @@ namespace rfir::models {
 void predictRangeBearing(const mrpt::math::TPose2D& sensor,
                          const mrpt::math::TPoint2D& landmark, double& range,
                          double& bearing) {
-    const double dx = landmark.x - sensor.x, dy = landmark.y - sensor.y;
-    range = std::hypot(dx, dy);
-    bearing = mrpt::math::wrapToPi(std::atan2(dy, dx) - sensor.phi);
+    const TRangeBearing h = rangeBearingModel(sensor, landmark);
+    range = h.range;
+    bearing = mrpt::math::wrapToPi(h.bearing);
+}
+
+mrpt::math::TPose2D sensorPoseInWorld(const mrpt::math::TPose2D& robot,
+                                      const mrpt::math::TPose2D& mount) {
+    const double c = std::cos(robot.phi), s = std::sin(robot.phi);
+    return {robot.x + c * mount.x - s * mount.y, robot.y + s * mount.x + c * mount.y,
+            mrpt::math::wrapToPi(robot.phi + mount.phi)};
+}
+
+TRangeBearing rangeBearingModel(const mrpt::math::TPose2D& robot,
+                                const mrpt::math::TPose2D& mount,
+                                const mrpt::math::TPoint2D& landmark,
+                                TRangeBearingJacobians* J) {
+    const TRangeBearing h =
+        rangeBearingModel(sensorPoseInWorld(robot, mount), landmark, J);
+    if (J) {
+        // d(sensor)/d(robot phi) = (-(R m)_y, (R m)_x, 1); x and y pass through.
+        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
+        const double mx = c * mount.x - s * mount.y, my = s * mount.x + c * mount.y;
+        for (auto& row : J->sensor) row[2] += -row[0] * my + row[1] * mx;
+    }
+    return h;
 }
 
 double rangeBearingLogLikelihood(const mrpt::math::TPose2D& sensor,
@@ -25,9 +47,10 @@ double rangeBearingLogLikelihood(const mrpt::math::TPose2D& sensor,
 }
 
 mrpt::math::TPoint2D rangeBearingToPoint(const mrpt::math::TPose2D& sensor, double range,
-                                         double bearing) {
-    const double a = sensor.phi + bearing;
-    return {sensor.x + range * std::cos(a), sensor.y + range * std::sin(a)};
+                                         double bearing, double (*G)[2]) {
+    const double a = sensor.phi + bearing, c = std::cos(a), s = std::sin(a);
+    if (G) G[0][0] = c, G[0][1] = -range * s, G[1][0] = s, G[1][1] = range * c;
+    return {sensor.x + range * c, sensor.y + range * s};
 }
 
 std::vector<mrpt::math::TPoint2D> sampleRangeBearingInverse(

@@ -22,7 +22,7 @@ struct TOdoFactor {
     double ux, uy, uphi;  //!< the increment
     double wxy, wphi;     //!< 1 / std
 };
-/** R(theta_k)^T (tag - p_k) = reader centre (eq. 6 of 003, inverted). */
+/** readModel(p_k, reader centre, tag) = 0 (eq. 6 of 003, inverted). */
 struct TReadFactor {
     size_t k, tag;
     double cx, cy;  //!< reader centre, robot frame
@@ -150,16 +150,17 @@ class CProblem {
                     std::vector<Eigen::Triplet<double>>* H, Eigen::VectorXd* g) const {
         const Eigen::Vector3d p = s.x.segment<3>(3 * f.k);
         const Eigen::Vector2d m = s.x.segment<2>(tagVar(f.tag));
-        const double c = std::cos(p[2]), sn = std::sin(p[2]);
-        const double ex = m[0] - p[0], ey = m[1] - p[1];
-        const double lx = c * ex + sn * ey, ly = -sn * ex + c * ey;
+        rfir::models::TReadJacobians Jr;
+        const auto e =
+            rfir::models::readModel({p[0], p[1], p[2]}, f.cx, f.cy, {m[0], m[1]}, &Jr);
         const Eigen::Vector2d w(f.wx, f.wy);
-        const Eigen::Vector2d r = Eigen::Vector2d(lx - f.cx, ly - f.cy).cwiseProduct(w);
+        const Eigen::Vector2d r = Eigen::Vector2d(e.x, e.y).cwiseProduct(w);
         if (H || g) {
             using J2 = Eigen::Matrix<double, 2, -1>;
             J2 Jp(2, 3), Jm(2, 2);
-            Jp << -c, -sn, ly, sn, -c, -lx;
-            Jm << c, sn, -sn, c;
+            Jp << Jr.pose[0][0], Jr.pose[0][1], Jr.pose[0][2], Jr.pose[1][0],
+                Jr.pose[1][1], Jr.pose[1][2];
+            Jm << Jr.tag[0][0], Jr.tag[0][1], Jr.tag[1][0], Jr.tag[1][1];
             accumulate<2>(
                 {{3 * f.k, w.asDiagonal() * Jp}, {tagVar(f.tag), w.asDiagonal() * Jm}}, r,
                 H, g);

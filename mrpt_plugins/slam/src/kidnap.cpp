@@ -1,4 +1,6 @@
 #include <rfir/models/ini_reader.h>
+#include <rfir/models/range_bearing.h>
+#include <rfir/models/read_model.h>
 #include <rfir/slam/kidnap.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -62,13 +64,15 @@ mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
     } else {
         const double r = d.a + rng.drawGaussian1D(0, std::max(d.stdRange, 1e-3));
         const double b = d.b + rng.drawGaussian1D(0, std::max(d.stdBearing, 1e-3));
-        const mrpt::poses::CPose2D p =
-            d.sensor + mrpt::poses::CPose2D(r * std::cos(b), r * std::sin(b), 0);
-        sx = p.x();
-        sy = p.y();
+        // The range-bearing inverse model, in the robot frame.
+        const auto p = rfir::models::rangeBearingToPoint(
+            {d.sensor.x(), d.sensor.y(), d.sensor.phi()}, r, b);
+        sx = p.x;
+        sy = p.y;
     }
-    const double c = std::cos(phi), s = std::sin(phi);
-    return {a.x - (c * sx - s * sy), a.y - (s * sx + c * sy), phi};
+    const auto t = rfir::models::robotPositionFromRead({a.x, a.y}, std::cos(phi),
+                                                       std::sin(phi), sx, sy);
+    return {t.x, t.y, phi};
 }
 
 std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& anchors,

@@ -1,3 +1,5 @@
+#include <rfir/models/range_bearing.h>
+#include <rfir/models/read_model.h>
 #include <rfir/slam/landmark_ekf.h>
 
 #include <mrpt/core/bits_math.h>
@@ -6,9 +8,13 @@
 
 namespace rfir::slam {
 namespace {
-Eigen::Matrix2d rot(double phi) {
+mrpt::math::TPose2D tpose(const mrpt::poses::CPose2D& p) {
+    return {p.x(), p.y(), p.phi()};
+}
+template <class M>
+Eigen::Matrix2d mat(const M& a) {
     Eigen::Matrix2d r;
-    r << std::cos(phi), -std::sin(phi), std::sin(phi), std::cos(phi);
+    r << a[0][0], a[0][1], a[1][0], a[1][1];
     return r;
 }
 }  // namespace
@@ -31,19 +37,19 @@ TLinearMeasurement CGaussianLandmarkModel::linearize(const TDetection& d,
     TLinearMeasurement z;
     z.R = noise(d);
     if (d.kind == TDetection::Kind::RFID) {
-        // h(m) = Rot(phi)^T (m - t): the tag in the robot frame.
-        const Eigen::Matrix2d Rt = rot(robot.phi()).transpose();
-        const Eigen::Vector2d h = Rt * (m - Eigen::Vector2d(robot.x(), robot.y()));
-        z.innovation = Eigen::Vector2d(d.a, d.b) - h;
-        z.H = Rt;
+        // The read model's e = tag - reader centre (a, b), robot frame: z - h = -e.
+        rfir::models::TReadJacobians J;
+        const auto e =
+            rfir::models::readModel(tpose(robot), d.a, d.b, {m.x(), m.y()}, &J);
+        z.innovation = Eigen::Vector2d(-e.x, -e.y);
+        z.H = mat(J.tag);
         return z;
     }
-    const mrpt::poses::CPose2D s = robot + d.sensor;
-    const double dx = m.x() - s.x(), dy = m.y() - s.y();
-    const double q = std::max(dx * dx + dy * dy, 1e-12), r = std::sqrt(q);
-    z.innovation = Eigen::Vector2d(
-        d.a - r, mrpt::math::wrapToPi(d.b - (std::atan2(dy, dx) - s.phi())));
-    z.H << dx / r, dy / r, -dy / q, dx / q;
+    rfir::models::TRangeBearingJacobians J;
+    const auto h =
+        rfir::models::rangeBearingModel(tpose(robot + d.sensor), {m.x(), m.y()}, &J);
+    z.innovation = Eigen::Vector2d(d.a - h.range, mrpt::math::wrapToPi(d.b - h.bearing));
+    z.H = mat(J.landmark);
     return z;
 }
 
@@ -52,17 +58,23 @@ TLandmarkEKF CGaussianLandmarkModel::initialize(const TDetection& d,
     TLandmarkEKF lm;
     const Eigen::Matrix2d R = noise(d);
     if (d.kind == TDetection::Kind::RFID) {
-        const Eigen::Matrix2d Rr = rot(robot.phi());
-        lm.mean = Eigen::Vector2d(robot.x(), robot.y()) + Rr * Eigen::Vector2d(d.a, d.b);
+        // Inverse read model: the tag at the reader centre; d(tag)/d(offset)
+        // = R(phi) = (dh/dtag)^T.
+        const auto t = tpose(robot);
+        const auto c = rfir::models::robotFrameToWorld(t, std::cos(t.phi),
+                                                       std::sin(t.phi), d.a, d.b);
+        rfir::models::TReadJacobians J;
+        rfir::models::readModel(t, d.a, d.b, c, &J);
+        const Eigen::Matrix2d Rr = mat(J.tag).transpose();
+        lm.mean = Eigen::Vector2d(c.x, c.y);
         lm.cov = Rr * R * Rr.transpose();
         return lm;
     }
-    const mrpt::poses::CPose2D s = robot + d.sensor;
-    const double a = s.phi() + d.b, c = std::cos(a), sn = std::sin(a);
-    lm.mean = Eigen::Vector2d(s.x() + d.a * c, s.y() + d.a * sn);
-    Eigen::Matrix2d G;  // d(mean)/d(range, bearing)
-    G << c, -d.a * sn, sn, d.a * c;
-    lm.cov = G * R * G.transpose();
+    double G[2][2];  // d(mean)/d(range, bearing)
+    const auto p =
+        rfir::models::rangeBearingToPoint(tpose(robot + d.sensor), d.a, d.b, G);
+    lm.mean = Eigen::Vector2d(p.x, p.y);
+    lm.cov = mat(G) * R * mat(G).transpose();
     return lm;
 }
 

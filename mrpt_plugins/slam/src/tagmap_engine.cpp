@@ -37,8 +37,9 @@ struct TConsistency {
 double rbConsistencyLogLik(const mrpt::poses::CPose2D& sensor,
                            const CRFIDTagParticleMap::TTagEntry& lm, const TDetection& d,
                            const rfir::models::RangeBearingParams& rb) {
-    const double a = sensor.phi() + d.b;
-    const double px = sensor.x() + d.a * std::cos(a), py = sensor.y() + d.a * std::sin(a);
+    const auto q = rfir::models::rangeBearingToPoint(
+        {sensor.x(), sensor.y(), sensor.phi()}, d.a, d.b);
+    const double px = q.x, py = q.y;
     const double var = rb.sigmaRange * rb.sigmaRange +
                        (d.a * rb.sigmaBearing) * (d.a * rb.sigmaBearing) +
                        0.5 * (lm.estimate.cov(0, 0) + lm.estimate.cov(1, 1));

@@ -3,27 +3,25 @@
  * unique-ID emitter (an LED array, several codes) in the centre of every four. */
 #pragma once
 
+#include <rfir/obs/ir_voltage_curve.h>  // expectedVoltage, eq. 5.3
+
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace rfir::ir
-{
-struct TRoom
-{
+namespace rfir::ir {
+struct TRoom {
     double minX = 0, minY = 0, maxX = 0, maxY = 0;  //!< metres
 };
 
-struct TEmitter
-{
+struct TEmitter {
     std::string id;              //!< ascending codes written together ("39")
     std::vector<uint8_t> codes;  //!< ascending, 1..9
     double x = 0, y = 0, z = 0;  //!< z: height above the floor (m)
     bool repeated = false;       //!< single-code emitter, ID used many times
 };
 
-struct TLatticeParams
-{
+struct TLatticeParams {
     double pitch = 0.8;   //!< distance between two emitters of the same type (m)
     double height = 1.5;  //!< emitter height above the floor (m)
     /** Codes of the repeated-ID emitters, tiled so that grid neighbours differ:
@@ -48,10 +46,5 @@ struct TLatticeParams
  * a bad room or parameters, or if the room needs more unique IDs than the
  * 9 codes give. */
 std::vector<TEmitter> makeEmitterLattice(const TRoom& room, const TLatticeParams& p = {});
-
-/** Amplified receiver voltage at horizontal distance d (metres) from the
- * emitter, thesis eq. 5.3 (fitted with d in mm at 1.2 m height, 0-300 mm):
- * V = -3.27e-5 d_mm^2 + 2.855e-3 d_mm + 1.81997. */
-double expectedVoltage(double horizontalDistance);
 
 }  // namespace rfir::ir

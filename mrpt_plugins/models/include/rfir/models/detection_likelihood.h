@@ -1,6 +1,10 @@
 /* rfir: likelihood of an HF RFID detection (SPEC section 2; eq. 5 of the PF-SLAM
- * paper, eq. 3.7 of the thesis). */
+ * paper, eq. 3.7 of the thesis): the read model (read_model.h) composed with
+ * one of the noise models (read_noise.h). */
 #pragma once
+
+#include <rfir/models/read_model.h>
+#include <rfir/models/read_noise.h>
 
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
@@ -27,6 +31,11 @@ struct DetectionModelParams {
     double beta = 1.618;
     /** Gaussian model: sigma per axis = scale * half-size. */
     double gaussianSigmaScale = 1.0;
+    /** Outlier mixture (COutlierReadNoise) over the model above: share eps of
+     * reads from anywhere, with log-likelihood `outlierLogFloor` (relative to
+     * the model's best, 0). 0 = off, the seeds' model alone. */
+    double outlierWeight = 0.0;
+    double outlierLogFloor = -10.0;
 };
 
 /** Step model, log of eq. 3.7 with per-axis sigma = half-size:
@@ -37,16 +46,21 @@ double stepDetectionLogLikelihood(double ex, double ey, double hx, double hy,
 /** Gaussian model: -ex^2/(2sx^2) - ey^2/(2sy^2) (unnormalised, 0 at the centre). */
 double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy);
 
-/** Functor over both models. Likelihoods are unnormalised (max 1): only ratios
- * between particles matter to the filters. */
+/** Functor over the models: e from readModel, then the noise model.
+ * Likelihoods are unnormalised (max 1): only ratios between particles matter
+ * to the filters. */
 class DetectionLikelihood {
   public:
     DetectionLikelihood() = default;
     explicit DetectionLikelihood(const DetectionModelParams& p)
-        : m_p(p), m_logBeta(std::log(p.beta)) {}
+        : m_p(p), m_step(p.beta), m_gauss(p.gaussianSigmaScale) {}
 
     /** (ex, ey) in the robot frame, half-sizes of the detecting reader. */
-    double logLikelihoodOffset(double ex, double ey, double hx, double hy) const;
+    double logLikelihoodOffset(double ex, double ey, double hx, double hy) const {
+        if (m_p.outlierWeight > 0) return mixtureLogLik(ex, ey, hx, hy);
+        return m_p.model == DetectionModel::Step ? m_step.logLik(ex, ey, hx, hy)
+                                                 : m_gauss.logLik(ex, ey, hx, hy);
+    }
     /** Tag at `tag` (world), reader `r` placed by the robot pose `robot` (eq. 6
      * of the PF-SLAM paper), offset rotated into the robot frame. */
     double logLikelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
@@ -61,12 +75,17 @@ class DetectionLikelihood {
     const DetectionModelParams& params() const { return m_p; }
 
   private:
+    double mixtureLogLik(double ex, double ey, double hx, double hy) const;
+
     DetectionModelParams m_p;
-    double m_logBeta = std::log(DetectionModelParams().beta);  //!< hoisted from eq. 3.7
+    CStepReadNoise m_step;
+    CGaussianReadNoise m_gauss;
 };
 
 /** World position of a reader's centre for a robot pose (eq. 6 of 003). */
-mrpt::math::TPoint2D readerCentreInWorld(const mrpt::math::TPose2D& robot,
-                                         const ReaderArea& r);
+inline mrpt::math::TPoint2D readerCentreInWorld(const mrpt::math::TPose2D& robot,
+                                                const ReaderArea& r) {
+    return robotFrameToWorld(robot, std::cos(robot.phi), std::sin(robot.phi), r.x, r.y);
+}
 
 }  // namespace rfir::models

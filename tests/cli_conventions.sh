@@ -4,8 +4,13 @@
 # directory, with --help, --version, an unknown option, malformed numbers and
 # a missing required option. Checks the exit codes (0, 0, then non-zero), that
 # a bad number is reported naming its option, and that nothing was written:
-# the directory stays empty and no file under SRC/docs changes.
-#   bash tests/cli_conventions.sh BIN SRC
+# the directory stays empty and no file under SRC/docs changes. Then bad
+# --set edits in every program that takes --set (the same checks, and the
+# message names the section or key), -q on short real runs (nothing on
+# stdout, nothing but warnings on stderr), and --set / --seed of the
+# experiment programs on tiny real runs.
+#   bash tests/cli_conventions.sh BIN SRC [basic|options|all]
+# basic: the first part; options: the rest (two ctests, run in parallel).
 set -uo pipefail
 BIN=$(cd "$1" && pwd)
 SRC=$(cd "$2" && pwd)
@@ -96,48 +101,191 @@ run() {
   rm -rf "$wd"
 }
 
-ints=(abc -3 1.5 5e2 nan "" 99999999999999999999999)
-reals=(abc nan -inf 1e400)
-n=0
-for exe in "$BIN"/rfir-*; do
-  [ -f "$exe" ] && [ -x "$exe" ] || continue
-  prog=$(basename "$exe")
-  n=$((n + 1))
-  if [ -z "${BASE[$prog]+x}" ]; then
-    fail "$prog: no entry in tests/cli_conventions.sh (every program must have one)"
-    continue
-  fi
-  read -r -a base <<<"${BASE[$prog]}"
-  # rfir-ids' --room is one argument with blanks; written with commas above.
-  for i in "${!base[@]}"; do [ "${base[$i]}" = 0,0,3.2,2.4 ] && base[$i]="0 0 3.2 2.4"; done
-  run "$prog" 0 --help
-  grep -q -i "usage" "$root/stdout" || fail "$prog --help: no usage on stdout"
-  run "$prog" 0 --version
-  run "$prog" nonzero "${base[@]}" --no-such-option
-  run "$prog" nonzero "${base[@]}" -Z
-  if [ "${INT[$prog]}" != - ]; then
-    for v in "${ints[@]}"; do
-      run "$prog" nonzero "${base[@]}" "${INT[$prog]}" "$v"
-      grep -q -- "${INT[$prog]}" <<<"$last_err" ||
-        fail "$prog ${INT[$prog]} '$v': the message does not name the option: $last_err"
-    done
-  fi
-  if [ "${REAL[$prog]}" != - ]; then
-    for v in "${reals[@]}"; do
-      val=$v
-      [ "${REAL[$prog]}" = --start ] && val="0 0 $v"
-      run "$prog" nonzero "${base[@]}" "${REAL[$prog]}" "$val"
-      grep -q -- "${REAL[$prog]}" <<<"$last_err" ||
-        fail "$prog ${REAL[$prog]} '$val': the message does not name the option: $last_err"
-    done
-  fi
-  if [ "${MISSING[$prog]}" != - ]; then
-    read -r -a missing <<<"${MISSING[$prog]}"
-    run "$prog" nonzero "${missing[@]}"
-  fi
-done
+basic_checks() {
+  ints=(abc -3 1.5 5e2 nan "" 99999999999999999999999)
+  reals=(abc nan -inf 1e400)
+  n=0
+  for exe in "$BIN"/rfir-*; do
+    [ -f "$exe" ] && [ -x "$exe" ] || continue
+    prog=$(basename "$exe")
+    n=$((n + 1))
+    if [ -z "${BASE[$prog]+x}" ]; then
+      fail "$prog: no entry in tests/cli_conventions.sh (every program must have one)"
+      continue
+    fi
+    read -r -a base <<<"${BASE[$prog]}"
+    # rfir-ids' --room is one argument with blanks; written with commas above.
+    for i in "${!base[@]}"; do [ "${base[$i]}" = 0,0,3.2,2.4 ] && base[$i]="0 0 3.2 2.4"; done
+    run "$prog" 0 --help
+    grep -q -i "usage" "$root/stdout" || fail "$prog --help: no usage on stdout"
+    run "$prog" 0 --version
+    run "$prog" nonzero "${base[@]}" --no-such-option
+    run "$prog" nonzero "${base[@]}" -Z
+    if [ "${INT[$prog]}" != - ]; then
+      for v in "${ints[@]}"; do
+        run "$prog" nonzero "${base[@]}" "${INT[$prog]}" "$v"
+        grep -q -- "${INT[$prog]}" <<<"$last_err" ||
+          fail "$prog ${INT[$prog]} '$v': the message does not name the option: $last_err"
+      done
+    fi
+    if [ "${REAL[$prog]}" != - ]; then
+      for v in "${reals[@]}"; do
+        val=$v
+        [ "${REAL[$prog]}" = --start ] && val="0 0 $v"
+        run "$prog" nonzero "${base[@]}" "${REAL[$prog]}" "$val"
+        grep -q -- "${REAL[$prog]}" <<<"$last_err" ||
+          fail "$prog ${REAL[$prog]} '$val': the message does not name the option: $last_err"
+      done
+    fi
+    if [ "${MISSING[$prog]}" != - ]; then
+      read -r -a missing <<<"${MISSING[$prog]}"
+      run "$prog" nonzero "${missing[@]}"
+    fi
+  done
+  [ $n -ge 9 ] || fail "found only $n programs in $BIN"
+}
 
-[ $n -ge 9 ] || fail "found only $n programs in $BIN"
+# quiet_run PROGRAM ARGS...: a short real run in a fresh directory: exit 0,
+# something written, nothing on stdout, nothing on stderr but warnings.
+quiet_run() {
+  local prog=$1
+  shift
+  local wd
+  wd=$(mktemp -d "$root/wd_XXXXXX")
+  (cd "$wd" && timeout 120 "$BIN/$prog" "$@" >"$root/stdout" 2>"$root/stderr")
+  local code=$?
+  local what="$prog $*"
+  [ $code -eq 0 ] || fail "$what: exit $code: $(head -c 400 "$root/stderr")"
+  [ -s "$root/stdout" ] && fail "$what: printed on stdout: $(head -c 200 "$root/stdout")"
+  grep -v -i "warning" "$root/stderr" | grep -q . &&
+    fail "$what: printed on stderr: $(head -c 200 "$root/stderr")"
+  [ -n "$(ls -A "$wd")" ] || fail "$what: wrote nothing"
+  rm -rf "$wd"
+}
+
+# exp_run PROGRAM DIR ARGS...: an experiment program with -q into $root/DIR.
+exp_run() {
+  local prog=$1 d=$2
+  shift 2
+  (cd "$root" && timeout 300 "$BIN/$prog" -q --out-dir "$d" "$@" >"$root/stdout" 2>"$root/stderr") ||
+    fail "$prog $*: exit $?: $(head -c 300 "$root/stderr")"
+  [ -s "$root/stdout" ] && fail "$prog -q $*: printed on stdout"
+}
+
+# results.json of $root/DIR without what changes from run to run (times, the
+# command line, the edits).
+numbers() {
+  sed -E 's/"(command|wall_seconds|ms_per_step|max_step_ms|total_s|ini_edits)":(\[[^]]*\]|"[^"]*"|[^,]*),?//g' \
+    "$root/$1/results.json"
+}
+ir_md() { sed '/^Run time:/d' "$root/$1/results_ir.md" 2>/dev/null; }
+
+# --set: a malformed edit, an unknown section, an unknown key and a bad value
+# (each EDIT@WORD: the message must name WORD) exit non-zero before any work,
+# writing nothing, in every program that takes --set.
+bad_set_checks() {
+  declare -A SETS
+  SETS[rfir-slam]="slam_particles=5@slam_particles nosuch.k=1@nosuch
+    slam.no_such_key=1@no_such_key slam.robot_particles=abc@robot_particles"
+  SETS[rfir-localize]="localization=5@localization nosuch.k=1@nosuch
+    localization.no_such_key=1@no_such_key localization.num_particles=1.5@num_particles"
+  SETS[rfir-sim]="speed=0.3@speed nosuch.k=1@nosuch trajectory.no_such_key=1@no_such_key
+    trajectory.speed=abc@speed"
+  SETS[rfir-experiments]="slam_particles=5@slam_particles nosuch.k=1@nosuch
+    slam.no_such_key=1@no_such_key trajectory.speed=abc@speed kidnap.enabled=true@kidnap
+    slam:trajectory.speed=1@trajectory"
+  SETS[rfir-ir-experiments]="localization=5@localization nosuch.k=1@nosuch
+    trajectory.no_such_key=1@no_such_key localization.num_particles=abc@num_particles"
+  SETS[rfir-bench]="slam_particles=5@slam_particles nosuch.k=1@nosuch
+    tagmap.no_such_key=1@no_such_key trajectory.speed=abc@speed
+    slam.robot_particles=50@robot_particles"
+  for prog in "${!SETS[@]}"; do
+    [ -x "$BIN/$prog" ] || { fail "$prog: not built"; continue; }
+    read -r -a base <<<"${BASE[$prog]}"
+    for item in ${SETS[$prog]}; do
+      edit=${item%@*} word=${item##*@}
+      run "$prog" nonzero "${base[@]}" --set "$edit"
+      grep -q -- "$word" <<<"$last_err" ||
+        fail "$prog --set '$edit': the message does not name '$word': $last_err"
+    done
+  done
+}
+
+# -q on short real runs of every program but the experiment ones (below).
+quiet_checks() {
+  quiet_run rfir-slam --rawlog "$DS/rfid_60mm_16tags_loop.rawlog" --out-dir out --method pf \
+    --set slam.robot_particles=30 -q
+  quiet_run rfir-localize --rawlog "$DS/ir_raw_15s.rawlog" --emitters "$DS/ir_raw_15s.gt_map.txt" \
+    --out-dir out --set localization.num_particles=200 -q
+  quiet_run rfir-sim --config "$CFG/sim_kidnap.ini" --out-dir out \
+    --set simulation.max_duration=5 -q
+  quiet_run rfir-eval --path "$DS/rfid_kidnap.gt.tum" --gt-path "$DS/rfid_kidnap.gt.tum" \
+    --json-file out.json -q
+  quiet_run rfir-import --input "$SRC/tests/data/textlog/full.txt" --output out.rawlog -q
+  quiet_run rfir-ids plan --room "0 0 3.2 2.4" --output out.txt -q
+  local bench=(--quick --no-realtime --m 100 --n 10 --methods ps --updates 5 --rounds 1
+    --set tagmap.num_particles=20)
+  quiet_run rfir-bench "${bench[@]}" --out-dir out -q
+  exp_run rfir-bench bench "${bench[@]}"
+  grep -qF '"ini_edits": ["tagmap.num_particles=20"]' "$root/bench/benchmark.json" ||
+    fail "rfir-bench --set: not in benchmark.json's ini_edits"
+}
+
+# --set and --seed reach the runs. rfir-experiments: a simulation edit (10 s
+# runs: 101 steps each) and a first seed, recorded in results.json and
+# results.md; the same command again gives the same numbers, a SLAM edit
+# other ones. rfir-ir-experiments: --seed 1 is the default, --seed 3 and a
+# localization edit give other numbers, recorded in the header.
+experiment_checks() {
+  local ex=(--quick --rows t31_16 --no-figures --set simulation.max_duration=10)
+  exp_run rfir-experiments e1 "${ex[@]}" --seed 3
+  exp_run rfir-experiments e2 "${ex[@]}" --seed 3
+  exp_run rfir-experiments e3 "${ex[@]}" --seed 3 --set slam.robot_particles=5
+  local j
+  j=$(cat "$root/e1/results.json" 2>/dev/null)
+  grep -qF '"seeds":[3],' <<<"$j" || fail "rfir-experiments --seed 3: seeds not [3] in results.json"
+  grep -qF '"ini_edits":["simulation.max_duration=10"]' <<<"$j" ||
+    fail "rfir-experiments --set: not in results.json's ini_edits"
+  [ "$(grep -o '"steps":[0-9]*' <<<"$j" | sort -u)" = '"steps":101' ] ||
+    fail "rfir-experiments --set simulation.max_duration=10: not 101 steps per run"
+  grep -qF '`simulation.max_duration=10`' "$root/e1/results.md" ||
+    fail "rfir-experiments --set: not in the results.md header"
+  [ "$(numbers e1)" = "$(numbers e2)" ] || fail "rfir-experiments: the same command, other numbers"
+  [ "$(numbers e1)" != "$(numbers e3)" ] ||
+    fail "rfir-experiments --set slam.robot_particles=5: the same numbers"
+
+  local ir=(--quick --only rotation)
+  exp_run rfir-ir-experiments i1 "${ir[@]}"
+  exp_run rfir-ir-experiments i2 "${ir[@]}" --seed 1
+  exp_run rfir-ir-experiments i3 "${ir[@]}" --seed 3
+  exp_run rfir-ir-experiments i4 "${ir[@]}" --seed 3 --set localization.num_particles=300
+  [ "$(ir_md i1)" = "$(ir_md i2)" ] || fail "rfir-ir-experiments --seed 1 is not the default"
+  [ "$(ir_md i1 | sed 's/seed 1/seed 3/')" != "$(ir_md i3 | sed 's/ --seed 3//')" ] ||
+    fail "rfir-ir-experiments --seed 3: the same numbers as seed 1"
+  grep -qF -- "--seed 3," "$root/i3/results_ir.md" ||
+    fail "rfir-ir-experiments --seed 3: not in the header"
+  grep -qF "Loop with rotations, seed 3" "$root/i3/results_ir.md" ||
+    fail "rfir-ir-experiments --seed 3: the figure is not seed 3's"
+  # Past the header (which names the edit): the tables differ.
+  [ "$(ir_md i3 | sed 1,4d)" != "$(ir_md i4 | sed 1,4d)" ] ||
+    fail "rfir-ir-experiments --set localization.num_particles=300: the same numbers"
+  grep -qF -- "--set localization.num_particles=300" "$root/i4/results_ir.md" ||
+    fail "rfir-ir-experiments --set: not in the header"
+}
+
+option_checks() {
+  bad_set_checks
+  quiet_checks
+  experiment_checks
+}
+
+case ${3:-all} in
+  basic) basic_checks ;;
+  options) option_checks ;;
+  all) basic_checks; option_checks ;;
+  *) echo "usage: cli_conventions.sh BIN SRC [basic|options|all]" >&2; exit 2 ;;
+esac
+
 [ "$(docs_hash)" = "$before" ] || fail "a file under $SRC/docs changed"
-echo "cli_conventions: $n programs, $failures failure(s)"
+echo "cli_conventions (${3:-all}): $failures failure(s)"
 [ $failures -eq 0 ]

@@ -1,7 +1,11 @@
 /* The command-line helpers every program uses: strict numbers, lists, the
- * parse outcome (help / version / error), --start folding, stock INIs by name. */
+ * parse outcome (help / version / error), --start folding, stock INIs by name,
+ * --set edits split between the kinds of INI a program reads. */
 #include <rfir/common/cli.h>
+#include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <gtest/gtest.h>
 
@@ -135,4 +139,51 @@ TEST(Cli, StockIniByBareName) {
     // A path is a path; an unknown name is left for the loader to report.
     EXPECT_EQ(resolveConfigFile("./slam_ps.ini"), "./slam_ps.ini");
     EXPECT_EQ(resolveConfigFile("no_such_config"), "no_such_config");
+}
+
+TEST(Cli, IniEditsAreSplitOnce) {
+    const TIniEdit e = parseIniEdit("MetricMap_x.y.key=a=b");
+    EXPECT_EQ(e.section, "MetricMap_x.y");
+    EXPECT_EQ(e.key, "key");
+    EXPECT_EQ(e.value, "a=b");
+    for (const char* bad : {"slam_particles=5", ".k=1", "slam.=1", "slam.k", ""})
+        EXPECT_THROW(parseIniEdit(bad), std::runtime_error) << bad;
+    mrpt::config::CConfigFileMemory ini;
+    applyIniOverrides(ini, {"slam.robot_particles=50", "slam.robot_particles=60"});
+    EXPECT_EQ(ini.read_int("slam", "robot_particles", 0), 60);  // the last one wins
+}
+
+TEST(Cli, IniEditsAreRoutedBySection) {
+    const std::vector<TIniKind> kinds = {
+        {"sim", "simulation INIs", {"trajectory", "kidnap", "odometry"}},
+        {"slam", "SLAM INIs", {"slam", "kidnap", "motion"}}};
+    const auto r = routeIniEdits(
+        kinds, {"slam.robot_particles=200", "trajectory.speed=0.3", "sim:kidnap.time=5",
+                "slam:kidnap.enabled=false", "motion.a1=0.1"});
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_EQ(r[0], (std::vector<std::string>{"trajectory.speed=0.3", "kidnap.time=5"}));
+    EXPECT_EQ(r[1], (std::vector<std::string>{"slam.robot_particles=200",
+                                              "kidnap.enabled=false", "motion.a1=0.1"}));
+    EXPECT_TRUE(routeIniEdits(kinds, {})[0].empty());
+    auto message = [&](const std::string& edit) {
+        try {
+            routeIniEdits(kinds, {"slam.robot_particles=1", edit});
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    // Each names the edit and what is wrong with it.
+    EXPECT_NE(message("nosuch.k=1").find("unknown section [nosuch]"), std::string::npos);
+    EXPECT_NE(message("kidnap.enabled=true")
+                  .find("sim:kidnap.enabled=true or "
+                        "slam:kidnap.enabled=true"),
+              std::string::npos);
+    EXPECT_NE(message("sim:slam.robot_particles=1").find("unknown section [slam]"),
+              std::string::npos);
+    EXPECT_NE(message("ir:trajectory.speed=1").find("no INI kind 'ir:'"),
+              std::string::npos);
+    EXPECT_NE(message("slam_particles=5").find("'slam_particles=5'"), std::string::npos);
+    EXPECT_NE(message("slam_particles=5").find("expected section.key=value"),
+              std::string::npos);
 }

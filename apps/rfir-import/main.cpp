@@ -62,8 +62,7 @@ int main(int argc, char** argv) {
                                "rawlog -> text: write what textlog 1 can hold and list "
                                "what it cannot, instead of failing",
                                cmd, false);
-        TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on stderr", cmd,
-                               false);
+        TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);
         if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
             return *code;
         return run(in.getValue(), out.getValue(), lossy.getValue(), quiet.getValue());

@@ -24,6 +24,9 @@ struct TBenchOptions {
     double realtimeSeconds = 1200;  //!< simulated length of the real-time run
     std::string configDir;          //!< stock INIs (slam_*.ini, bench_*.ini)
     uint64_t seed = 1;
+    /** The user's --set edits, applied last: into every SLAM INI (after
+     * [slam] robot_particles = M) and into the simulated floor's INI. */
+    std::vector<std::string> slamSets, simSets, sets;
     bool quick = false;
     bool realtime = true;  //!< run the whole offline runs
 };

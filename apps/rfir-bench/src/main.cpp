@@ -5,7 +5,9 @@
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>
+#include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>
+#include <rfir/sim/simulator.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/filesystem.h>
@@ -114,6 +116,31 @@ void runAll(TBenchReport& r, bool quiet) {
     r.realtime = runRealtime(o, runs);
 }
 
+/** The --set edits into o (by section), checked by loading every INI the
+ * bench reads with them: a bad edit fails before any work. */
+void setEdits(TBenchOptions& o, const std::vector<std::string>& sets) {
+    const auto split = rfir::common::routeIniEdits(
+        {{"slam", "SLAM INIs", rfir::slam::slamConfigSections()},
+         {"sim", "simulation INI", rfir::sim::simConfigSections()}},
+        sets);
+    for (const auto& e : split[0])
+        if (rfir::common::parseIniEdit(e).section == "slam" &&
+            rfir::common::parseIniEdit(e).key == "robot_particles")
+            throw std::invalid_argument("--set " + e +
+                                        ": the robot particles are what the bench "
+                                        "varies; give them with --m");
+    o.sets = sets;
+    o.slamSets = split[0];
+    o.simSets = split[1];
+    try {
+        for (const auto& m : o.methods) benchConfig(o, m, o.fixedM);
+        // Also under --no-realtime: a bad edit is an error whether used or not.
+        rfir::sim::loadSimConfig(o.configDir + "/bench_floor_30x20.ini", o.simSets);
+    } catch (const std::exception& e) {  // a usage error: the INI names it
+        throw std::invalid_argument(e.what());
+    }
+}
+
 /** --quick: a smoke run of seconds. */
 void setQuick(TBenchOptions& o) {
     o.quick = true;
@@ -168,7 +195,14 @@ std::optional<int> parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& 
     TCLAP::ValueArg<std::string> cfgDir("", "config-dir", "folder of the stock INIs",
                                         false, "", "DIR", cmd);
     CNumberArg<uint64_t> seed("", "seed", "random seed (1)", false, 1, "N", cmd);
-    TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr", cmd);
+    TCLAP::MultiArg<std::string> sets(
+        "", "set",
+        "override an INI key, after the bench's own: a SLAM INI's (e.g. "
+        "tagmap.particles_per_tag=50; not slam.robot_particles: see --m) or the "
+        "whole runs' simulation INI's (e.g. trajectory.speed=0.3); [kidnap] is in "
+        "both: sim:kidnap.KEY=VALUE or slam:kidnap.KEY=VALUE (repeatable)",
+        false, "SECTION.KEY=VALUE", cmd);
+    TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
     if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv)) return code;
 
     if (quick.getValue()) setQuick(o);
@@ -186,6 +220,7 @@ std::optional<int> parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& 
     o.realtime = !noRealtime.getValue();
     o.seed = seed.getValue();
     o.configDir = cfgDir.isSet() ? cfgDir.getValue() : defaultConfigDir();
+    setEdits(o, sets.getValue());  // before --out-dir is created
     out = {json.getValue(), md.getValue(), plots.getValue(), quiet.getValue()};
     if (outDir.isSet()) {
         const std::string d = outDir.getValue();
@@ -216,7 +251,7 @@ int main(int argc, char** argv) {
         runAll(r, out.quiet);
         r.loadAfter = loadAverage();
         evaluate(r);
-        printTable(r, std::cout);
+        if (!out.quiet) printTable(r, std::cout);
         using rfir::common::writeFileAtomically;
         if (!out.json.empty())
             writeFileAtomically(out.json, [&](std::ostream& f) { f << toJson(r); });

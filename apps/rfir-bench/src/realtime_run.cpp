@@ -26,7 +26,9 @@ std::vector<TRealtimeResult> runRealtime(
     const std::string config = o.configDir + "/bench_floor_30x20.ini";
     char dur[64];
     std::snprintf(dur, sizeof(dur), "simulation.max_duration=%g", o.realtimeSeconds);
-    const auto simCfg = rfir::sim::loadSimConfig(config, {dur});
+    std::vector<std::string> sets = {dur};
+    sets.insert(sets.end(), o.simSets.begin(), o.simSets.end());
+    const auto simCfg = rfir::sim::loadSimConfig(config, sets);
     auto t0 = Clock::now();
     const auto sim = rfir::sim::simulate(simCfg, o.seed);
     const double simulateSeconds =

@@ -123,7 +123,10 @@ std::string toJson(const TBenchReport& r) {
       << "\",\n  \"seed\": " << r.options.seed
       << ",\n  \"quick\": " << (r.options.quick ? "true" : "false")
       << ",\n  \"timed_updates\": " << r.options.timedUpdates
-      << ",\n  \"rounds\": " << r.options.rounds
+      << ",\n  \"rounds\": " << r.options.rounds << ",\n  \"ini_edits\": [";
+    for (size_t i = 0; i < r.options.sets.size(); i++)
+        o << (i ? ", " : "") << "\"" << jsonEscape(r.options.sets[i]) << "\"";
+    o << "]"
       << ",\n  \"time_measure\": \"thread CPU time per update\""
       << ",\n  \"load_before\": " << r.loadBefore
       << ",\n  \"load_after\": " << r.loadAfter

@@ -41,7 +41,13 @@ std::string toMarkdown(const TBenchReport& r) {
       << " at the end); one thread; seed " << r.options.seed << "; times are thread CPU "
       << "time, median of " << r.options.timedUpdates << " timed updates per case, the "
       << "fastest of " << r.options.rounds << " rounds (wall: the wall-clock median of "
-      << "that round).\n\n";
+      << "that round).";
+    if (!r.options.sets.empty()) {
+        o << " INI edits (`--set`):";
+        for (const auto& e : r.options.sets) o << " `" << e << "`";
+        o << ".";
+    }
+    o << "\n\n";
     o << "**Floor** (motion noise draw + one detection likelihood per particle)\n\n"
       << "| M | median us | mean us | wall us |\n| ---: | ---: | ---: | ---: |\n";
     for (const auto& f : r.floor)

@@ -2,6 +2,7 @@
 #include "bench.h"
 #include "synthetic_drive.h"
 
+#include <rfir/common/ini_override.h>
 #include <rfir/slam/slam_config.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
@@ -19,6 +20,18 @@
 namespace rfir::bench {
 using Clock = std::chrono::steady_clock;
 
+namespace {
+rfir::slam::TSlamConfig loadSlamConfigOf(const std::string& path,
+                                         const mrpt::config::CConfigFileBase& f,
+                                         const std::string& method) {
+    try {
+        return rfir::slam::loadSlamConfig(f, method);
+    } catch (const std::exception& e) {  // a memory INI's errors name no file
+        throw std::invalid_argument(path + ": " + e.what());
+    }
+}
+}  // namespace
+
 rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& method,
                                     size_t M) {
     const std::string path = o.configDir + "/slam_" + method + ".ini";
@@ -28,7 +41,8 @@ rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& m
     mrpt::config::CConfigFileMemory f;
     f.setContent(mrpt::io::file_get_contents(path));
     f.write("slam", "robot_particles", std::to_string(M));
-    auto cfg = rfir::slam::loadSlamConfig(f, method);
+    rfir::common::applyIniOverrides(f, o.slamSets);
+    auto cfg = loadSlamConfigOf(path, f, method);
     cfg.seed = o.seed;
     return cfg;
 }

@@ -115,8 +115,7 @@ TArgs parse(int argc, char** argv) {
                                           "FILE (atomically)",
                                           false, "", "FILE", cmd);
     TCLAP::SwitchArg jsonOnly("", "json-only", "print only the JSON line", cmd);
-    TCLAP::SwitchArg quiet(
-        "q", "quiet", "print nothing on stdout (write only the files asked for)", cmd);
+    TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
     TCLAP::MultiArg<std::string> runs(
         "", "run",
         "a run to compare with the others (repeat it): its label, path and "

@@ -44,8 +44,8 @@ std::vector<TRow> selectRows(const std::string& list, bool quick) {
 }
 
 /** Every (point, sub-run, seed, method) of a row. */
-TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds,
-                   const std::string& cfgDir, size_t idx, size_t nRows, bool quiet) {
+TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds, const TSetup& setup,
+                   size_t idx, size_t nRows, bool quiet) {
     FILE* log = quiet ? nullptr : stderr;
     if (row.maxSeeds && seeds.size() > row.maxSeeds) seeds.resize(row.maxSeeds);
     TRowResults res;
@@ -54,7 +54,7 @@ TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds,
         for (size_t k = 0; k < row.runs.size(); k++)
             for (uint64_t seed : seeds) {
                 const auto t0 = Clock::now();
-                auto data = simulateDataSet(cfgDir, row.runs[k], row.points[p], seed);
+                auto data = simulateDataSet(setup, row.runs[k], row.points[p], seed);
                 const bool first = p == 0 && k == 0 && seed == seeds.front();
                 if (log)
                     std::fprintf(
@@ -63,7 +63,7 @@ TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds,
                         row.points[p].label.empty() ? "" : " ", row.runs[k].label.c_str(),
                         (unsigned long long)seed, data.sim.steps.size());
                 for (const auto& m : row.methods) {
-                    auto r = runMethod(cfgDir, data, m, row.points[p], seed, first);
+                    auto r = runMethod(setup, data, m, row.points[p], seed, first);
                     r.point = p;
                     r.run = k;
                     if (log)
@@ -142,12 +142,20 @@ int main(int argc, char** argv) {
                                               "the report (e.g. git describe)",
                                               false, "", "TEXT", cmd);
         TCLAP::SwitchArg noFig("", "no-figures", "do not draw the PNG figures", cmd);
-        TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr", cmd);
+        TCLAP::MultiArg<std::string> sets(
+            "", "set",
+            "override an INI key in every INI of the run, after the rows' own edits: a "
+            "simulation INI's (e.g. trajectory.speed=0.3) or a SLAM INI's (e.g. "
+            "slam.robot_particles=200); [kidnap] is in both: sim:kidnap.KEY=VALUE or "
+            "slam:kidnap.KEY=VALUE (repeatable)",
+            false, "SECTION.KEY=VALUE", cmd);
+        TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
         if (const auto code = rfir::common::parseCommandLine(
                 cmd, argc, argv, {{"--out", "--out-dir"}, {"--first-seed", "--seed"}}))
             return *code;
 
         std::vector<TRow> selected;
+        TSetup setup;
         try {  // usage errors: exit as a parse error does
             selected = selectRows(rows.getValue(), quick.getValue());
             if (!list.getValue() && out.getValue().empty())
@@ -155,11 +163,15 @@ int main(int argc, char** argv) {
             if (notes.isSet() && !mrpt::system::fileExists(notes.getValue()))
                 throw std::invalid_argument("--notes: cannot read '" + notes.getValue() +
                                             "'");
+            setup = makeSetup(cfgDir.getValue(), sets.getValue());
+            // Every INI with every edit, before hours of work.
+            if (!list.getValue()) checkConfigs(setup, selected);
         } catch (const std::invalid_argument& e) {
             std::cerr << "rfir-experiments: error: " << e.what() << "\n";
             return rfir::common::kUsageExitCode;
         }
         if (list.getValue()) {
+            if (quiet.getValue()) return 0;
             for (const auto& r : allRows(false))
                 std::cout << r.id << "\t" << r.source << ": " << r.title << "\n";
             return 0;
@@ -168,6 +180,7 @@ int main(int argc, char** argv) {
         TMeta meta;
         meta.quick = quick.getValue();
         meta.revision = revision.getValue();
+        meta.sets = sets.getValue();
         for (unsigned i = 0; i < n; i++) meta.seeds.push_back(firstSeed.getValue() + i);
         for (int i = 0; i < argc; i++)
             meta.commandLine +=
@@ -181,8 +194,8 @@ int main(int argc, char** argv) {
         const auto t0 = Clock::now();
         std::vector<TRowResults> results;
         for (size_t i = 0; i < selected.size(); i++)
-            results.push_back(runRow(selected[i], meta.seeds, cfgDir.getValue(), i,
-                                     selected.size(), quiet.getValue()));
+            results.push_back(runRow(selected[i], meta.seeds, setup, i, selected.size(),
+                                     quiet.getValue()));
         meta.wallSeconds = since(t0);
         writeOutputs(out.getValue(), results, meta, notes.getValue(), !noFig.getValue(),
                      quiet.getValue());

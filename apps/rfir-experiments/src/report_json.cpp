@@ -67,6 +67,9 @@ void writeJson(const std::string& path, const std::vector<TRowResults>& rows,
           << ",\"quick\":" << (meta.quick ? "true" : "false") << ",\"seeds\":[";
         for (size_t i = 0; i < meta.seeds.size(); i++)
             o << (i ? "," : "") << meta.seeds[i];
+        o << "],\"ini_edits\":[";
+        for (size_t i = 0; i < meta.sets.size(); i++)
+            o << (i ? "," : "") << q(meta.sets[i]);
         o << "],\"wall_seconds\":" << n(meta.wallSeconds) << ",\"rows\":[\n";
         for (size_t i = 0; i < rows.size(); i++) {
             o << (i ? ",\n" : "");

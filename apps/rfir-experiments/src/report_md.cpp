@@ -183,8 +183,14 @@ std::string header(const TMeta& meta) {
       << (meta.quick ? " (**quick mode: tiny runs**)" : "") << ". Seeds: ";
     for (size_t i = 0; i < meta.seeds.size(); i++) o << (i ? ", " : "") << meta.seeds[i];
     o << " (each seed drives both the simulation and the SLAM run; the same seed gives "
-         "the same numbers). Wall time: "
-      << fmt(meta.wallSeconds / 60, 1) << " min. Every raw number is in "
+         "the same numbers).";
+    if (!meta.sets.empty()) {
+        o << " INI edits (`--set`, applied after the rows' own edits):";
+        for (const auto& e : meta.sets) o << " `" << e << "`";
+        o << ".";
+    }
+    o << " Wall time: " << fmt(meta.wallSeconds / 60, 1)
+      << " min. Every raw number is in "
       << "[results.json](results.json).\n\n"
       << "All methods run on the same simulated data of each seed, with the stock INIs "
          "(`config_ini/slam_ps.ini`, `slam_pf.ini`, `slam_fastslam.ini`); dead reckoning "

@@ -24,7 +24,8 @@ struct TMeta {
     std::vector<uint64_t> seeds;
     bool quick = false;
     std::string commandLine;
-    std::string revision;  //!< source revision (--revision), for the record
+    std::string revision;           //!< source revision (--revision), for the record
+    std::vector<std::string> sets;  //!< the --set edits, as given
     double wallSeconds = 0;
 };
 

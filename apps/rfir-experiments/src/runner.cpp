@@ -23,16 +23,30 @@ std::string readText(const std::string& path) {
     return rfir::common::readSmallTextFile(path, "INI file");
 }
 
-rfir::slam::TSlamConfig slamConfig(const std::string& dir, const TMethodSpec& m,
+rfir::slam::TSlamConfig slamConfig(const TSetup& s, const TMethodSpec& m,
                                    const TPoint& p) {
     const std::string file = m.method == "fastslam" ? "fastslam"
                              : m.method == "ps"     ? "ps"
                                                     : "pf";
-    mrpt::config::CConfigFileMemory ini(readText(dir + "/slam_" + file + ".ini"));
+    const std::string path = s.configDir + "/slam_" + file + ".ini";
+    mrpt::config::CConfigFileMemory ini(readText(path));
     // Edits go into an in-memory copy of the INI (never the file).
     rfir::common::applyIniOverrides(ini, p.slamEdits);
     rfir::common::applyIniOverrides(ini, m.edits);
-    return rfir::slam::loadSlamConfig(ini, m.method);
+    rfir::common::applyIniOverrides(ini, s.slamEdits);
+    try {
+        return rfir::slam::loadSlamConfig(ini, m.method);
+    } catch (const std::exception& e) {  // a memory INI's errors name no file
+        throw std::invalid_argument(path + ": " + e.what());
+    }
+}
+
+std::vector<std::string> simOverrides(const TSetup& s, const TSubRun& run,
+                                      const TPoint& point) {
+    std::vector<std::string> ov = run.simOverrides;
+    ov.insert(ov.end(), point.simOverrides.begin(), point.simOverrides.end());
+    ov.insert(ov.end(), s.simEdits.begin(), s.simEdits.end());
+    return ov;
 }
 
 TMapEntry::Kind mapKind(const rfir::sim::TSimOutput& sim) {
@@ -62,12 +76,33 @@ void kidnapMetrics(const rfir::sim::TSimConfig& cfg, TRunResult& r) {
 }
 }  // namespace
 
-TDataSet simulateDataSet(const std::string& configDir, const TSubRun& run,
-                         const TPoint& point, uint64_t seed) {
-    std::vector<std::string> ov = run.simOverrides;
-    ov.insert(ov.end(), point.simOverrides.begin(), point.simOverrides.end());
+TSetup makeSetup(const std::string& configDir, const std::vector<std::string>& sets) {
+    const auto split = rfir::common::routeIniEdits(
+        {{"sim", "simulation INIs", rfir::sim::simConfigSections()},
+         {"slam", "SLAM INIs", rfir::slam::slamConfigSections()}},
+        sets);
+    return {configDir, split[0], split[1]};
+}
+
+void checkConfigs(const TSetup& setup, const std::vector<TRow>& rows) {
+    try {
+        for (const auto& row : rows)
+            for (const auto& p : row.points) {
+                for (const auto& r : row.runs)
+                    rfir::sim::loadSimConfig(setup.configDir + "/" + r.simIni,
+                                             simOverrides(setup, r, p));
+                for (const auto& m : row.methods) slamConfig(setup, m, p);
+            }
+    } catch (const std::exception& e) {  // a usage error: the INI names it
+        throw std::invalid_argument(e.what());
+    }
+}
+
+TDataSet simulateDataSet(const TSetup& setup, const TSubRun& run, const TPoint& point,
+                         uint64_t seed) {
     TDataSet d;
-    d.cfg = rfir::sim::loadSimConfig(configDir + "/" + run.simIni, ov);
+    d.cfg = rfir::sim::loadSimConfig(setup.configDir + "/" + run.simIni,
+                                     simOverrides(setup, run, point));
     if (point.odometryScale > 0) d.cfg.odometry.scale(point.odometryScale);
     d.sim = rfir::sim::simulate(d.cfg, seed);
     if (!d.sim.header.readers.empty())
@@ -79,10 +114,9 @@ TDataSet simulateDataSet(const std::string& configDir, const TSubRun& run,
     return d;
 }
 
-TRunResult runMethod(const std::string& configDir, const TDataSet& data,
-                     const TMethodSpec& m, const TPoint& point, uint64_t seed,
-                     bool keepOutputs) {
-    auto cfg = slamConfig(configDir, m, point);
+TRunResult runMethod(const TSetup& setup, const TDataSet& data, const TMethodSpec& m,
+                     const TPoint& point, uint64_t seed, bool keepOutputs) {
+    auto cfg = slamConfig(setup, m, point);
     cfg.seed = seed;
     // MRPT's particle filter draws from the global generator.
     mrpt::random::getRandomGenerator().randomize(uint32_t(seed));

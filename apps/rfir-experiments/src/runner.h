@@ -47,14 +47,30 @@ struct TDataSet {
     std::optional<std::set<std::string>> passed;
 };
 
-/** Loads the sub-run's sim INI from `configDir` with the overrides of the
- * sub-run and the point, and simulates it with `seed`. */
-TDataSet simulateDataSet(const std::string& configDir, const TSubRun& run,
-                         const TPoint& point, uint64_t seed);
+/** Where the INIs are, and the user's --set edits: they go last, after a
+ * row's own edits, into every simulation INI and every SLAM INI. */
+struct TSetup {
+    std::string configDir;
+    std::vector<std::string> simEdits, slamEdits;
+};
 
-/** Runs `m` (stock INI from `configDir` + the point's and method's edits). */
-TRunResult runMethod(const std::string& configDir, const TDataSet& data,
-                     const TMethodSpec& m, const TPoint& point, uint64_t seed,
-                     bool keepOutputs);
+/** The --set edits split between the simulation INIs and the SLAM INIs (by
+ * section; "sim:" or "slam:" for [kidnap], in both). Throws
+ * std::invalid_argument naming a malformed or unknown edit. */
+TSetup makeSetup(const std::string& configDir, const std::vector<std::string>& sets);
+
+/** Loads every INI the rows read, with their edits and the user's, so that an
+ * unknown key or a bad value fails before any run. Throws
+ * std::invalid_argument "FILE: [section] key: why". */
+void checkConfigs(const TSetup& setup, const std::vector<TRow>& rows);
+
+/** Loads the sub-run's sim INI with the overrides of the sub-run, the point
+ * and the user, and simulates it with `seed`. */
+TDataSet simulateDataSet(const TSetup& setup, const TSubRun& run, const TPoint& point,
+                         uint64_t seed);
+
+/** Runs `m` (stock INI + the point's, the method's and the user's edits). */
+TRunResult runMethod(const TSetup& setup, const TDataSet& data, const TMethodSpec& m,
+                     const TPoint& point, uint64_t seed, bool keepOutputs);
 
 }  // namespace rfir::experiments

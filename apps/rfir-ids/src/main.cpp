@@ -61,7 +61,7 @@ struct TArgs {
     CNumberArg<uint64_t> repIds{
         "", "repeated-ids",  "memory: repeated IDs used", false, 9, "N", cmd,
         0,  1000000000000ULL};
-    TCLAP::SwitchArg quiet{"q", "quiet", "plan: no \"wrote FILE\" line", cmd};
+    TCLAP::SwitchArg quiet{"q", "quiet", rfir::common::kQuietHelp, cmd};
 };
 
 int cmdEncode(TArgs& a) {
@@ -105,7 +105,7 @@ int cmdPlan(TArgs& a) {
         rfir::common::saveMapFile(a.out.getValue(), f,
                                   "rfir-ids plan --room \"" + a.room.getValue() +
                                       "\" --pitch " + std::to_string(p.pitch));
-        if (!a.quiet.getValue()) std::cout << "wrote " << a.out.getValue() << "\n";
+        std::cout << "wrote " << a.out.getValue() << "\n";
     }
     return 0;
 }
@@ -130,6 +130,9 @@ int main(int argc, char** argv) {
         if (const auto code = rfir::common::parseCommandLine(a.cmd, argc, argv,
                                                              {{"--out", "--output"}}))
             return *code;
+        // --quiet: every result line is dropped (a stream without a buffer
+        // writes nothing); errors still go to stderr.
+        if (a.quiet.getValue()) std::cout.rdbuf(nullptr);
         const std::string c = a.command.getValue();
         if (c == "encode") return cmdEncode(a);
         if (c == "decode") return cmdDecode(a);

@@ -19,17 +19,11 @@ namespace {
 const std::string kMapPrefix = "MetricMap_irEmitterMap_00";
 
 void checkSections(const mrpt::config::CConfigFileBase& c, const std::string& file) {
-    const std::vector<std::string> allowed = {"localization",
-                                              "motion",
-                                              "MetricMap",
-                                              kMapPrefix + "_creationOpts",
-                                              kMapPrefix + "_insertOpts",
-                                              kMapPrefix + "_likelihoodOpts"};
     std::vector<std::string> sections;
     c.getAllSections(sections);
     for (const auto& s : sections) {
         bool ok = false;
-        for (const auto& a : allowed) ok = ok || a == s;
+        for (const auto& a : configSections()) ok = ok || a == s;
         if (!ok)
             throw std::runtime_error("unknown INI section [" + s +
                                      "] (allowed: localization, motion, MetricMap, " +
@@ -47,6 +41,15 @@ void checkSections(const mrpt::config::CConfigFileBase& c, const std::string& fi
         ins.getBool(k, true);
 }
 }  // namespace
+
+std::vector<std::string> configSections() {
+    return {"localization",
+            "motion",
+            "MetricMap",
+            kMapPrefix + "_creationOpts",
+            kMapPrefix + "_insertOpts",
+            kMapPrefix + "_likelihoodOpts"};
+}
 
 std::string cleanMessage(const std::exception& e) {
     // MRPT wraps exceptions that cross its code in banners and a backtrace:
@@ -68,7 +71,7 @@ std::string stockIniPath() {
     return rfir::common::stockConfigDir() + "/ir_localize.ini";
 }
 
-void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
+void loadConfig(TConfig& cfg, const std::string& emitterOverride, bool requireEmitters) {
     if (!std::filesystem::exists(cfg.iniPath))
         throw std::runtime_error(cfg.iniPath + ": INI file not found");
     // A memory copy: CConfigFile would write our additions back to the file.
@@ -113,7 +116,7 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride) {
         throw std::runtime_error(cfg.iniPath + ": " + what);
     }
     if (!cfg.map) throw std::runtime_error(cfg.iniPath + ": no irEmitterMap was created");
-    if (cfg.emitterPath.empty())
+    if (cfg.emitterPath.empty() && requireEmitters)
         throw std::runtime_error(
             "no emitter file: give --emitters FILE or set emitter_file in [" +
             kMapPrefix + "_creationOpts] of " + cfg.iniPath);

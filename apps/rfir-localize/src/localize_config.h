@@ -29,12 +29,18 @@ std::string cleanMessage(const std::exception& e);
 /** <exe_dir>/../share/rfir/config_ini/ir_localize.ini */
 std::string stockIniPath();
 
+/** The sections loadConfig knows (for routing a program's --set edits). */
+std::vector<std::string> configSections();
+
 /** Reads the INI: sections [localization], [motion], [MetricMap] and the
  * emitter map's sections, created through MRPT's map factory
  * (TSetOfMetricMapInitializers + CMultiMetricMap). Unknown sections and keys
  * are errors naming them. `emitterOverride` (non-empty) replaces
- * emitter_file. Fills cfg.params, cfg.map, cfg.emitterPath. */
-void loadConfig(TConfig& cfg, const std::string& emitterOverride);
+ * emitter_file. Fills cfg.params, cfg.map, cfg.emitterPath. `requireEmitters`
+ * false: no emitter file is no error (a check of the INI and its --set edits
+ * before the emitters exist). */
+void loadConfig(TConfig& cfg, const std::string& emitterOverride,
+                bool requireEmitters = true);
 
 /** The effective configuration as an INI (settings.ini). */
 std::string settingsIni(const TConfig& cfg, const std::string& commandLine);

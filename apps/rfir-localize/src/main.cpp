@@ -59,10 +59,11 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
                   << (res.firstUniqueTime ? std::to_string(*res.firstUniqueTime) + " s"
                                           : "never")
                   << ", " << res.resetEvents << " sensor resets\n";
-        if (!cfg.odometryOnly && !res.firstUniqueTime)
-            std::cerr << "rfir-localize: warning: no unique-ID reading: no estimate\n";
         std::cout << table;
     }
+    // A warning, also under --quiet.
+    if (!cfg.odometryOnly && !res.firstUniqueTime)
+        std::cerr << "rfir-localize: warning: no unique-ID reading: no estimate\n";
     return 0;
 }
 }  // namespace
@@ -90,8 +91,7 @@ int main(int argc, char** argv) {
         "override an INI key: SECTION.KEY=VALUE (repeatable), "
         "e.g. --set localization.num_particles=300",
         false, "SECTION.KEY=VALUE", cmd);
-    TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr, no table on stdout",
-                           cmd);
+    TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
     try {
         if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
             return *code;

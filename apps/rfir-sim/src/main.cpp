@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
             "", "set",
             "override an INI key, e.g. --set trajectory.speed=0.3 (repeatable)", false,
             "SECTION.KEY=VALUE", cmd);
-        TCLAP::SwitchArg quiet("q", "quiet", "no progress on stderr", cmd, false);
+        TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);
         // -o was the folder here but is a file elsewhere (rfir-import).
         if (const auto code =
                 rfir::common::parseCommandLine(cmd, argc, argv, {{"-o", "--out-dir"}}))

@@ -183,19 +183,23 @@ void TSimConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                   *this);
 }
 
+const std::vector<std::string>& simConfigSections() {
+    static const std::vector<std::string> kSections = {
+        "simulation", "robot", "trajectory", "kidnap",
+        "odometry",   "rfid",  "ir",         "range_bearing"};
+    return kSections;
+}
+
 TSimConfig loadSimConfig(const std::string& iniPath,
                          const std::vector<std::string>& overrides) {
     mrpt::config::CConfigFileMemory f(
         rfir::common::readSmallTextFile(iniPath, "simulation INI file"));
     rfir::common::applyIniOverrides(f, overrides);
-    static const char* kSections[] = {"simulation", "robot",        "trajectory",
-                                      "kidnap",     "odometry",     "rfid",
-                                      "ir",         "range_bearing"};
     std::vector<std::string> secs;
     f.getAllSections(secs);
     for (const auto& s : secs) {
         bool ok = s.empty();
-        for (const char* k : kSections) ok = ok || s == k;
+        for (const auto& k : simConfigSections()) ok = ok || s == k;
         if (!ok)
             throw std::runtime_error(iniPath + ": [" + s +
                                      "] unknown section (known: simulation, robot, "

@@ -52,8 +52,7 @@ int main(int argc, char** argv) {
             "output; beyond the seeds): path_smoothed.tum, map_smoothed.txt, "
             "path_map_smoothed.png, errors_smoothed.json",
             cmd, false);
-        TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on stderr", cmd,
-                               false);
+        TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);
         std::vector<std::string> args(argv, argv + argc);
         try {
             rfir::common::foldOptionValues(args, "--start", 3);

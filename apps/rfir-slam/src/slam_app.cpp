@@ -335,7 +335,7 @@ int runSlamApp(const TAppArgs& args) {
         smoothed->odometry.reset();  // the odometry row is printed once
         rows.push_back(*smoothed);
     }
-    if (!rows.empty()) std::cout << rfir::eval::formatErrorTable(rows);
+    if (!rows.empty() && !a.quiet) std::cout << rfir::eval::formatErrorTable(rows);
     logStream(a) << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()
                  << " landmarks, " << std::fixed << std::setprecision(2)
                  << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir

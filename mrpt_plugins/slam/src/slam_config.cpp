@@ -65,6 +65,12 @@ TSlamConfig loadSlamConfigFile(const std::string& path,
     }
 }
 
+std::vector<std::string> slamConfigSections() {
+    std::vector<std::string> v = {"slam", "motion", "kidnap", "fastslam"};
+    for (const auto& s : tagMapSections()) v.push_back(s);
+    return v;
+}
+
 std::string dumpSlamConfig(const TSlamConfig& cfg) {
     mrpt::config::CConfigFileMemory mem;
     cfg.slam.saveToConfigFile(mem, "slam");

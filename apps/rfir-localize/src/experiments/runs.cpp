@@ -5,6 +5,7 @@
 #include "localize_output.h"
 #include "localize_run.h"
 
+#include <rfir/common/ini_override.h>
 #include <rfir/common/map_io.h>
 #include <rfir/sim/simulator.h>
 
@@ -25,20 +26,26 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
     return s;
 }
 
+std::vector<std::string> simSets(const TSession& s, const TRunSpec& spec) {
+    std::vector<std::string> v = spec.simSets;
+    v.insert(v.end(), s.simSets.begin(), s.simSets.end());
+    return v;
+}
+
 /** The simulated data set of (ini, sets, seed), written once. */
 std::string dataset(const TSession& s, const TRunSpec& spec, uint64_t seed) {
     // The INI's text is part of the key: an edited INI is simulated anew.
     std::ifstream ini(s.configDir + "/" + spec.simIni);
     std::stringstream text;
     text << ini.rdbuf();
-    const std::string key = spec.simIni + "|" + text.str() + "|" +
-                            join(spec.simSets, ";") + "|" + std::to_string(seed);
+    const std::vector<std::string> sets = simSets(s, spec);
+    const std::string key = spec.simIni + "|" + text.str() + "|" + join(sets, ";") + "|" +
+                            std::to_string(seed);
     const std::string dir =
         s.workDir + "/data/" + std::to_string(std::hash<std::string>()(key));
     if (!fs::exists(dir + "/run.rawlog")) {
         fs::create_directories(dir);
-        const auto cfg =
-            rfir::sim::loadSimConfig(s.configDir + "/" + spec.simIni, spec.simSets);
+        const auto cfg = rfir::sim::loadSimConfig(s.configDir + "/" + spec.simIni, sets);
         rfir::sim::writeOutputs(rfir::sim::simulate(cfg, seed), dir, "run");
     }
     return dir;
@@ -96,6 +103,7 @@ TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
     cfg.odometryOnly = spec.odometryOnly;
     cfg.quiet = true;
     cfg.overrides = spec.locSets;
+    cfg.overrides.insert(cfg.overrides.end(), s.locSets.begin(), s.locSets.end());
     cfg.outDir = outDir;
     rfir::localize::loadConfig(cfg, emitterFile(dir, spec.absentIds));
     const auto gt = rfir::common::loadTUM(dir + "/run.gt.tum");
@@ -112,9 +120,10 @@ TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
 }
 
 std::vector<TRunMetrics> runSeeds(const TSession& s, const TRunSpec& spec, int n,
-                                  int firstSeed) {
+                                  uint64_t offset) {
     std::vector<TRunMetrics> out;
-    for (int k = 0; k < n; k++) out.push_back(runOne(s, spec, uint64_t(firstSeed + k)));
+    for (int k = 0; k < n; k++)
+        out.push_back(runOne(s, spec, s.firstSeed + offset + uint64_t(k)));
     return out;
 }
 
@@ -153,6 +162,29 @@ TAggregate aggregate(const std::vector<TRunMetrics>& runs) {
     a.hasPath = np > 0;
     a.hasSpots = nq > 0;
     return a;
+}
+
+void setEdits(TSession& s, const std::vector<std::string>& sets) {
+    const auto split = rfir::common::routeIniEdits(
+        {{"sim", "simulation INIs", rfir::sim::simConfigSections()},
+         {"localize", "localization INI", rfir::localize::configSections()}},
+        sets);
+    s.simSets = split[0];
+    s.locSets = split[1];
+    // The simulation INIs the experiments use (tables.cpp, tables2.cpp).
+    static const char* kSimInis[] = {"sim_ir_loop.ini",        "sim_ir_exp_strip.ini",
+                                     "sim_ir_unique_only.ini", "sim_ir_rotation.ini",
+                                     "sim_ir_failed.ini",      "sim_ir_raw.ini"};
+    try {
+        for (const char* f : kSimInis)
+            rfir::sim::loadSimConfig(s.configDir + "/" + f, s.simSets);
+        rfir::localize::TConfig cfg;
+        cfg.iniPath = s.configDir + "/ir_localize.ini";
+        cfg.overrides = s.locSets;
+        rfir::localize::loadConfig(cfg, "", false);
+    } catch (const std::exception& e) {  // a usage error: the INI names it
+        throw std::invalid_argument(e.what());
+    }
 }
 
 void progress(const TSession& s, const std::string& what) {

@@ -34,7 +34,18 @@ struct TSession {
     std::string configDir;  //!< config_ini of the source tree
     std::string workDir;    //!< rawlogs and per-run outputs
     bool verbose = true;
+    uint64_t firstSeed = 1;  //!< --seed: rows run seeds firstSeed, firstSeed + 1, ...
+    /** The user's --set edits, applied after a run's own: into every simulation
+     * INI and into the localization INI. */
+    std::vector<std::string> simSets, locSets;
 };
+
+/** The --set edits split between the simulation INIs and the localization
+ * INI (by section), into s.simSets and s.locSets; then every simulation INI
+ * the experiments read and ir_localize.ini are loaded with them, so that a
+ * malformed edit, an unknown section or key or a bad value fails before any
+ * run. Throws std::invalid_argument naming the edit or "FILE: [section] key". */
+void setEdits(TSession& s, const std::vector<std::string>& sets);
 
 /** One line on stderr naming the experiment being run (verbose sessions). */
 void progress(const TSession& s, const std::string& what);
@@ -54,8 +65,9 @@ struct TAggregate {
 };
 TAggregate aggregate(const std::vector<TRunMetrics>& runs);
 
-/** Runs a spec over seeds 1..n. */
+/** Runs a spec over n seeds from s.firstSeed + offset (an offset keeps a row's
+ * seeds apart from the others'). */
 std::vector<TRunMetrics> runSeeds(const TSession& s, const TRunSpec& spec, int n,
-                                  int firstSeed = 1);
+                                  uint64_t offset = 0);
 
 }  // namespace rfir::irexp

@@ -52,9 +52,9 @@ std::string startNote(const TAggregate& a) {
 }  // namespace
 
 std::string figure(const TSession& s, const TOptions& opt, const TRunSpec& spec,
-                   uint64_t seed, const std::string& name, const std::string& caption) {
+                   const std::string& name, const std::string& caption) {
     const std::string dir = s.workDir + "/fig_" + name;
-    runOne(s, spec, seed, dir);
+    runOne(s, spec, s.firstSeed, dir);
     fs::create_directories(opt.imgDir);
     fs::copy_file(dir + "/path.png", opt.imgDir + "/" + name,
                   fs::copy_options::overwrite_existing);
@@ -130,14 +130,15 @@ std::string expConfigurations(const TSession& s, const TOptions& opt) {
     TRunSpec mixed{"sim_ir_loop.ini"}, odo{"sim_ir_loop.ini"},
         strip{"sim_ir_exp_strip.ini"};
     odo.odometryOnly = true;
-    md << figure(
-              s, opt, mixed, 1, "ir_loop_mixed.png",
-              "Lattice room, unique + repeated IDs, seed 1: estimate (red) against the "
-              "ground truth (blue), odometry (grey), emitters (orange)")
-       << figure(s, opt, strip, 1, "ir_strip_mixed.png",
-                 "Strip room (the thesis' 3 unique + 8 repeated emitters), seed 1")
-       << figure(s, opt, odo, 1, "ir_loop_odometry.png",
-                 "Lattice room, odometry only, seed 1");
+    const std::string seed = "seed " + std::to_string(s.firstSeed);
+    md << figure(s, opt, mixed, "ir_loop_mixed.png",
+                 "Lattice room, unique + repeated IDs, " + seed +
+                     ": estimate (red) against the ground truth (blue), odometry "
+                     "(grey), emitters (orange)")
+       << figure(s, opt, strip, "ir_strip_mixed.png",
+                 "Strip room (the thesis' 3 unique + 8 repeated emitters), " + seed)
+       << figure(s, opt, odo, "ir_loop_odometry.png",
+                 "Lattice room, odometry only, " + seed);
     return md.str();
 }
 
@@ -157,7 +158,8 @@ std::string expRotation(const TSession& s, const TOptions& opt) {
        << tableHeader("configuration") << statsRow("unique + repeated IDs", aR.path)
        << statsRow("unique + repeated IDs, from 10 s after the start", aR.settled)
        << statsRow("odometry only", aO.path) << "\n"
-       << figure(s, opt, rot, 1, "ir_rotation.png", "Loop with rotations, seed 1");
+       << figure(s, opt, rot, "ir_rotation.png",
+                 "Loop with rotations, seed " + std::to_string(s.firstSeed));
     return md.str();
 }
 
@@ -180,7 +182,8 @@ std::string expSpeeds(const TSession& s, const TOptions& opt) {
     TRunSpec fast{"sim_ir_loop.ini"};
     fast.simSets = {"trajectory.speed=0.30"};
     md << "\n"
-       << figure(s, opt, fast, 1, "ir_speed_300.png", "Loop x3 at 300 mm/s, seed 1");
+       << figure(s, opt, fast, "ir_speed_300.png",
+                 "Loop x3 at 300 mm/s, seed " + std::to_string(s.firstSeed));
     return md.str();
 }
 
@@ -201,7 +204,8 @@ std::string expFailures(const TSession& s, const TOptions& opt) {
        << statsRow("two failed", aF.spots)
        << statsRow("all working, from 10 s after the start", aK.spotsSettled)
        << statsRow("two failed, from 10 s after the start", aF.spotsSettled) << "\n"
-       << figure(s, opt, failed, 1, "ir_failed.png", "Two failed emitters, seed 1");
+       << figure(s, opt, failed, "ir_failed.png",
+                 "Two failed emitters, seed " + std::to_string(s.firstSeed));
     return md.str();
 }
 

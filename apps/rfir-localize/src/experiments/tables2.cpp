@@ -185,7 +185,7 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
             sp.simSets = {"trajectory.laps=1", "trajectory.spots=0"};
             sp.locSets = vars[i].sets;
             sp.locSets.push_back("localization.num_particles=" + std::to_string(M));
-            const auto runs = runSeeds(s, sp, opt.sweepSeeds, 101);
+            const auto runs = runSeeds(s, sp, opt.sweepSeeds, 100);
             int ok = 0;
             for (const auto& r : runs)
                 ok +=

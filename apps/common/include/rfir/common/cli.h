@@ -19,6 +19,11 @@ namespace rfir::common {
 /** Exit code of a command-line error (unknown option, bad value, ...). */
 constexpr int kUsageExitCode = 2;
 
+/** What -q / --quiet means in every program. */
+constexpr const char* kQuietHelp =
+    "quiet: nothing on stdout, no progress or summary on stderr (errors and warnings "
+    "still go to stderr)";
+
 /** A spelling kept for old scripts: `old` is rewritten to `now` (also in
  * "old=value") with a warning on stderr. */
 struct TOptionAlias {

@@ -202,6 +202,9 @@ struct TSimConfig : public mrpt::config::CLoadableOptions
 TSimConfig loadSimConfig(const std::string& iniPath,
                          const std::vector<std::string>& overrides = {});
 
+/** The sections loadSimConfig knows (for routing a program's --set edits). */
+const std::vector<std::string>& simConfigSections();
+
 /** The default reader layout: 8 readers on a ring of radius `ringRadius`
  * at 22.5 + k * 45 deg, squares of half side `halfSize`. */
 std::vector<rfir::obs::TRFIDReader> ringReaderLayout(double ringRadius, double halfSize);

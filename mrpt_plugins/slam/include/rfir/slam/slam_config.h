@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rfir::slam {
 struct TTagMapSettings;  // tagmap_engine.h
@@ -37,5 +38,7 @@ TSlamConfig loadSlamConfigFile(const std::string& path,
                                const std::optional<std::string>& methodOverride = {});
 /** Every effective setting, as an INI text (settings.ini). */
 std::string dumpSlamConfig(const TSlamConfig& cfg);
+/** The sections loadSlamConfig knows (for routing a program's --set edits). */
+std::vector<std::string> slamConfigSections();
 
 }  // namespace rfir::slam

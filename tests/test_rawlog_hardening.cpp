@@ -306,3 +306,23 @@ TEST(RawlogHardening, TruncationAndFlipSweepNeverCrashes) {
     EXPECT_GT(err, 100);  // most cuts and flips are errors
     EXPECT_GT(ok, 0);     // the empty cut reads nothing; some flips hit values
 }
+
+// fuzz_rawlog's 2 GB string: the bearing-range label, refused by its guard
+// before MRPT sizes the string (not a std::bad_alloc under a memory cap).
+TEST(RawlogHardening, FuzzedBearingRangeLabelIsRefusedByName) {
+    const std::string f =
+        kSrc + "/tests/data/fuzz_crashes/rawlog/oom_string_2gb_at_merge.rawlog";
+    try {
+        rfir::common::CRawlogReader r(f);
+        rfir::common::TRawlogStep st;
+        while (r.next(st)) {
+        }
+        FAIL() << "read as valid";
+    } catch (const std::runtime_error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("entry 4"), std::string::npos) << m;
+        EXPECT_NE(m.find("CObservationBearingRange: sensorLabel length"),
+                  std::string::npos)
+            << m;
+    }
+}

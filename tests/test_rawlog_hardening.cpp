@@ -195,7 +195,14 @@ TEST(RawlogHardening, CutGzipTrailerIsAnErrorNamingTheEntry) {
 TEST(RawlogHardening, DirectoryIsCalledADirectory) {
     TmpDir d;
     fs::create_directories(d / "dir.rawlog");
-    expectCleanFailure("rfir-slam", d / "dir.rawlog", d, "is a directory");
+    for (const auto& prog : kPrograms)
+        expectCleanFailure(prog, d / "dir.rawlog", d, "is a directory");
+    fs::create_directories(d / "dir.txt");  // rfir-import's text input
+    const auto r = runCapped(
+        {kBin + "rfir-import", "--input", d / "dir.txt", "--output", d / "x.rawlog"},
+        d / "log.txt");
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("is a directory"), std::string::npos) << r.output;
     EXPECT_THROW(rfir::common::CRawlogReader(d / "dir.rawlog"), std::runtime_error);
 }
 

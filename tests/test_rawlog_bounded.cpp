@@ -232,6 +232,13 @@ TEST(MrptGuards, HugeContainerCountsAreRefused) {
         b[at + 3] = 0xFF;
         const auto e = errorOf([&] { readBack(b); });
         EXPECT_NE(e.find(name + ": object count"), std::string::npos) << e;
+        if (frame) {
+            // A fuzzed version byte: the pre-2009 layouts are refused.
+            b[at + 3] = 0;
+            b[at - 1] = 1;
+            const auto e1 = errorOf([&] { readBack(b); });
+            EXPECT_NE(e1.find("CSensoryFrame: version 1"), std::string::npos) << e1;
+        }
     }
 }
 

@@ -310,8 +310,12 @@ class CGuardedSensoryFrame : public mrpt::obs::CSensoryFrame {
   protected:
     void serializeFrom(CArchive& in, uint8_t version) override {
         CPeekArchive a(in);
-        // Versions 0 and 1 (before 2009) start with a timestamp.
-        if (version >= 2) checkContainerCount(a, "mrpt::obs::CSensoryFrame");
+        // Versions 0 and 1 (MRPT before 2009) put other fields before the
+        // count, which sizes the frame as well: not read.
+        if (version < 2)
+            refuse("mrpt::obs::CSensoryFrame", "version " + std::to_string(version) +
+                                                   " (MRPT before 2009) is not read");
+        checkContainerCount(a, "mrpt::obs::CSensoryFrame");
         CSensoryFrame::serializeFrom(a, version);
     }
 };

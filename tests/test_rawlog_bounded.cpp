@@ -396,3 +396,24 @@ TEST(MrptGuards, ScanMatchingMovementNeedsAGaussianPdf) {
     const auto e = errorOf([&] { readBack(serializedMovement(mv)); });
     EXPECT_NE(e.find("only a CPosePDFGaussian"), std::string::npos) << e;
 }
+
+// fuzz_rawlog found MRPT crashing (SIGSEGV) on an action collection whose
+// member is a null object: each member must be of the container's kind.
+TEST(MrptGuards, ContainerMembersMustBeOfTheirKind) {
+    registerAllClasses();
+    for (const bool null : {true, false}) {
+        auto b = serialized(mrpt::obs::CActionCollection());
+        const size_t at = 1 + std::string("mrpt::obs::CActionCollection").size() + 1;
+        b[at] = 1;     // one member ...
+        b.pop_back();  // ... before the end marker
+        const auto member = null ? serialized(mrpt::serialization::CSerializable::Ptr())
+                                 : serialized(mrpt::obs::CObservationOdometry());
+        b.insert(b.end(), member.begin(), member.end());
+        b.push_back(0x88);
+        const auto e = errorOf([&] { readBack(b); });
+        EXPECT_NE(e.find(null ? "object 0 is nullptr"
+                              : "object 0 is a mrpt::obs::CObservationOdometry"),
+                  std::string::npos)
+            << e;
+    }
+}

@@ -124,7 +124,7 @@ void checkRobotMovement2D(CPeekArchive& a, uint8_t version) {
 }
 
 /** A container (CActionCollection, CSensoryFrame) starts with its object count. */
-void checkContainerCount(CPeekArchive& a, const char* cls) {
+uint32_t checkContainerCount(CPeekArchive& a, const char* cls) {
     const auto n = a.peek<uint32_t>();
     // Each object takes at least a name-length byte, a one-letter name, a
     // version byte and the end marker.
@@ -136,6 +136,7 @@ void checkContainerCount(CPeekArchive& a, const char* cls) {
     if (left && n * kMinObjectBytes > *left)
         refuse(cls, "object count " + std::to_string(n) + " exceeds the " +
                         std::to_string(*left) + " bytes left");
+    return n;
 }
 
 /** Reads ahead a whole pose object of class `name` (version `ver`, `n` doubles). */
@@ -297,26 +298,53 @@ class CGuardedRobotMovement2D : public mrpt::obs::CActionRobotMovement2D {
     }
 };
 
+/** Reads member `i` of a container, refusing a null or foreign object: MRPT
+ * keeps what ReadObject<T> returns, and a null action crashes
+ * CActionCollection::serializeFrom (a null deepcopy_poly_ptr is cloned). */
+template <class T>
+typename T::Ptr readMember(CArchive& a, const char* cls, uint32_t i) {
+    const auto o = a.ReadObject();
+    auto t = std::dynamic_pointer_cast<T>(o);
+    if (!t)
+        refuse(cls, "object " + std::to_string(i) + " is " +
+                        (o ? std::string("a ") + o->GetRuntimeClass()->className
+                           : std::string("nullptr")) +
+                        ", not a " + T::GetRuntimeClassIdStatic().className);
+    return t;
+}
+
+// The containers are read here, member by member, in MRPT 2.5.8's layout
+// (the count, then the objects); other versions go to MRPT, which refuses them.
 class CGuardedActionCollection : public mrpt::obs::CActionCollection {
   protected:
     void serializeFrom(CArchive& in, uint8_t version) override {
+        constexpr const char* kCls = "mrpt::obs::CActionCollection";
         CPeekArchive a(in);
-        checkContainerCount(a, "mrpt::obs::CActionCollection");
-        CActionCollection::serializeFrom(a, version);
+        const auto n = checkContainerCount(a, kCls);
+        if (version != 0) return CActionCollection::serializeFrom(a, version);
+        (void)a.ReadAs<uint32_t>();
+        clear();
+        for (uint32_t i = 0; i < n; i++)
+            insertPtr(readMember<mrpt::obs::CAction>(a, kCls, i));
     }
 };
 
 class CGuardedSensoryFrame : public mrpt::obs::CSensoryFrame {
   protected:
     void serializeFrom(CArchive& in, uint8_t version) override {
+        constexpr const char* kCls = "mrpt::obs::CSensoryFrame";
         CPeekArchive a(in);
         // Versions 0 and 1 (MRPT before 2009) put other fields before the
         // count, which sizes the frame as well: not read.
         if (version < 2)
-            refuse("mrpt::obs::CSensoryFrame", "version " + std::to_string(version) +
-                                                   " (MRPT before 2009) is not read");
-        checkContainerCount(a, "mrpt::obs::CSensoryFrame");
-        CSensoryFrame::serializeFrom(a, version);
+            refuse(kCls, "version " + std::to_string(version) +
+                             " (MRPT before 2009) is not read");
+        const auto n = checkContainerCount(a, kCls);
+        if (version != 2) return CSensoryFrame::serializeFrom(a, version);
+        (void)a.ReadAs<uint32_t>();
+        clear();
+        for (uint32_t i = 0; i < n; i++)
+            insert(readMember<mrpt::obs::CObservation>(a, kCls, i));
     }
 };
 

@@ -90,3 +90,26 @@ TEST(OutputSet, RunIdentity) {
     EXPECT_NE(j.find("test_output_set"), std::string::npos) << j;  // the command
     EXPECT_EQ(rfir::common::fileMD5((t.p / "a.ini").string()).size(), 32u);
 }
+
+// A run killed between the two renames of the fallback commit left outDir
+// missing and the earlier set in "<outDir>.old.<pid>": the next run puts it
+// back, and removes staging folders of dead processes.
+TEST(OutputSet, LeftoversOfKilledRunsAreCleaned) {
+    rfir_test::TmpDir t;
+    const std::string out = (t.p / "run").string();
+    const std::vector<std::string> pats = {"path.tum"};
+    // A pid that is not running (pid_max is far below it on Linux).
+    const std::string dead = "999999999";
+    fs::create_directories(out + ".old." + dead);
+    std::ofstream(out + ".old." + dead + "/path.tum") << "earlier\n";
+    fs::create_directories(out + ".tmp." + dead);
+    {
+        rfir::common::COutputFolder f(out, pats, "prog");
+        EXPECT_EQ(slurp(fs::path(out) / "path.tum"), "earlier\n");
+        std::ofstream(f.file("path.tum")) << "new\n";
+        f.commit();
+    }
+    EXPECT_EQ(slurp(fs::path(out) / "path.tum"), "new\n");
+    for (const auto& e : fs::directory_iterator(t.p))
+        EXPECT_EQ(e.path().filename(), "run") << e.path();
+}

@@ -10,7 +10,10 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRFID.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/poses/CPosePDFParticles.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <functional>
@@ -229,6 +232,13 @@ TEST(MrptGuards, HugeContainerCountsAreRefused) {
         b[at + 3] = 0xFF;
         const auto e = errorOf([&] { readBack(b); });
         EXPECT_NE(e.find(name + ": object count"), std::string::npos) << e;
+        if (frame) {
+            // A fuzzed version byte: the pre-2009 layouts are refused.
+            b[at + 3] = 0;
+            b[at - 1] = 1;
+            const auto e1 = errorOf([&] { readBack(b); });
+            EXPECT_NE(e1.find("CSensoryFrame: version 1"), std::string::npos) << e1;
+        }
     }
 }
 
@@ -283,4 +293,127 @@ TEST(MrptGuards, BearingRangeCountIsBounded) {
     b[at + 3] = 0x40;
     const auto e = errorOf([&] { readBack(b); });
     EXPECT_NE(e.find("measurement count"), std::string::npos) << e;
+}
+
+namespace {
+// Offset of the measurement count of a serialized bearing-range observation.
+size_t bearingCountOffset(bool validCov) {
+    return 1 + std::string("mrpt::obs::CObservationBearingRange").size() + 1 + 16 + 119 +
+           8 + 1 + (validCov ? 0 : 12);
+}
+}  // namespace
+
+// The label after the measurements (fuzz_crashes/rawlog/oom_string_2gb_at_merge).
+TEST(MrptGuards, BearingRangeLabelIsBounded) {
+    registerAllClasses();
+    mrpt::obs::CObservationBearingRange o;
+    o.sensorLabel = "RB";
+    o.sensedData.resize(2);
+    o.sensedData[1].landmarkID = 7;  // MRPT refuses to write duplicate IDs
+    auto b = serialized(o);
+    const size_t at = bearingCountOffset(false) + 4 + 2 * 16;
+    ASSERT_EQ(b[at], 2);
+    b[at + 3] = 0x7F;
+    const auto e = errorOf([&] { readBack(b); });
+    EXPECT_NE(e.find("CObservationBearingRange: sensorLabel length 2130706434"),
+              std::string::npos)
+        << e;
+}
+
+TEST(MrptGuards, BearingRangeCovariancesAreChecked) {
+    registerAllClasses();
+    mrpt::obs::CObservationBearingRange o;
+    o.validCovariances = true;
+    o.sensorLabel = "RB";
+    o.sensedData.resize(2);
+    o.sensedData[1].landmarkID = 7;
+    o.sensedData[1].covariance(2, 1) = 0.5;
+    auto b = serialized(o);
+    auto back =
+        std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(readBack(b));
+    ASSERT_TRUE(back);
+    ASSERT_EQ(back->sensedData.size(), 2u);
+    EXPECT_EQ(back->sensedData[1].covariance(2, 1), 0.5);
+    EXPECT_EQ(serialized(*back), b);
+    // The rows of the first covariance: after 16 bytes, the CMatrixD header.
+    const size_t rows = bearingCountOffset(true) + 4 + 16 + 1 +
+                        std::string("mrpt::math::CMatrixD").size() + 1;
+    ASSERT_EQ(b[rows], 3);
+    auto big = b;
+    big[rows + 3] = 0x7F;
+    const auto e = errorOf([&] { readBack(big); });
+    EXPECT_NE(e.find("not 3x3"), std::string::npos) << e;
+}
+
+TEST(MrptGuards, MrptRFIDCountsAndStringsAreBounded) {
+    registerAllClasses();
+    mrpt::obs::CObservationRFID o;
+    o.sensorLabel = "RFID";
+    o.tag_readings.resize(2);
+    o.tag_readings[1].epc = "E00401";
+    o.tag_readings[1].antennaPort = "1";
+    o.tag_readings[1].power = -55;
+    auto b = serialized(o);
+    auto back = std::dynamic_pointer_cast<mrpt::obs::CObservationRFID>(readBack(b));
+    ASSERT_TRUE(back);
+    ASSERT_EQ(back->tag_readings.size(), 2u);
+    EXPECT_EQ(back->tag_readings[1].epc, "E00401");
+    EXPECT_EQ(serialized(*back), b);
+    const size_t count = 1 + std::string("mrpt::obs::CObservationRFID").size() + 1;
+    ASSERT_EQ(b[count], 2);
+    auto many = b;
+    many[count + 3] = 0x10;
+    const auto e = errorOf([&] { readBack(many); });
+    EXPECT_NE(e.find("CObservationRFID: tag count"), std::string::npos) << e;
+    // The second EPC's length: after the count, two powers, the first EPC.
+    auto epc = b;
+    const size_t epc2 = count + 4 + 16 + 4;
+    ASSERT_EQ(epc[epc2], 6);
+    epc[epc2 + 3] = 0x7F;
+    const auto e2 = errorOf([&] { readBack(epc); });
+    EXPECT_NE(e2.find("EPC/antenna port length"), std::string::npos) << e2;
+}
+
+TEST(MrptGuards, ScanMatchingMovementNeedsAGaussianPdf) {
+    registerAllClasses();
+    mrpt::obs::CActionRobotMovement2D mv;
+    mv.estimationMethod = mrpt::obs::CActionRobotMovement2D::emScan2DMatching;
+    mrpt::poses::CPosePDFGaussian g(mrpt::poses::CPose2D(0.1, 0.2, 0.3));
+    mv.poseChange = std::make_shared<mrpt::poses::CPosePDFGaussian>(g);
+    auto b = serializedMovement(mv);
+    auto back = std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(readBack(b));
+    ASSERT_TRUE(back);
+    EXPECT_EQ(serializedMovement(*back), b);
+    // The PDF's version byte: after the method and the PDF's class name.
+    const size_t ver =
+        methodOffset() + 4 + 1 + std::string("mrpt::poses::CPosePDFGaussian").size();
+    ASSERT_EQ(b[ver], 2);
+    b[ver] = 1;
+    const auto e1 = errorOf([&] { readBack(b); });
+    EXPECT_NE(e1.find("only a CPosePDFGaussian (version 2)"), std::string::npos) << e1;
+    mrpt::poses::CPosePDFParticles p(3);
+    mv.poseChange = std::make_shared<mrpt::poses::CPosePDFParticles>(p);
+    const auto e = errorOf([&] { readBack(serializedMovement(mv)); });
+    EXPECT_NE(e.find("only a CPosePDFGaussian"), std::string::npos) << e;
+}
+
+// fuzz_rawlog found MRPT crashing (SIGSEGV) on an action collection whose
+// member is a null object: each member must be of the container's kind.
+TEST(MrptGuards, ContainerMembersMustBeOfTheirKind) {
+    registerAllClasses();
+    for (const bool null : {true, false}) {
+        auto b = serialized(mrpt::obs::CActionCollection());
+        const size_t at = 1 + std::string("mrpt::obs::CActionCollection").size() + 1;
+        b[at] = 1;     // one member ...
+        b.pop_back();  // ... before the end marker
+        const auto member = null ? serialized(mrpt::serialization::CSerializable::Ptr())
+                                 : serialized(mrpt::obs::CObservationOdometry());
+        b.insert(b.end(), member.begin(), member.end());
+        b.push_back(0x88);
+        const auto e = errorOf([&] { readBack(b); });
+        EXPECT_NE(e.find(null ? "object 0 is nullptr"
+                              : "object 0 is a mrpt::obs::CObservationOdometry"),
+                  std::string::npos)
+            << e;
+    }
 }

@@ -195,7 +195,14 @@ TEST(RawlogHardening, CutGzipTrailerIsAnErrorNamingTheEntry) {
 TEST(RawlogHardening, DirectoryIsCalledADirectory) {
     TmpDir d;
     fs::create_directories(d / "dir.rawlog");
-    expectCleanFailure("rfir-slam", d / "dir.rawlog", d, "is a directory");
+    for (const auto& prog : kPrograms)
+        expectCleanFailure(prog, d / "dir.rawlog", d, "is a directory");
+    fs::create_directories(d / "dir.txt");  // rfir-import's text input
+    const auto r = runCapped(
+        {kBin + "rfir-import", "--input", d / "dir.txt", "--output", d / "x.rawlog"},
+        d / "log.txt");
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("is a directory"), std::string::npos) << r.output;
     EXPECT_THROW(rfir::common::CRawlogReader(d / "dir.rawlog"), std::runtime_error);
 }
 
@@ -305,4 +312,24 @@ TEST(RawlogHardening, TruncationAndFlipSweepNeverCrashes) {
     EXPECT_EQ(bad, 0);
     EXPECT_GT(err, 100);  // most cuts and flips are errors
     EXPECT_GT(ok, 0);     // the empty cut reads nothing; some flips hit values
+}
+
+// fuzz_rawlog's 2 GB string: the bearing-range label, refused by its guard
+// before MRPT sizes the string (not a std::bad_alloc under a memory cap).
+TEST(RawlogHardening, FuzzedBearingRangeLabelIsRefusedByName) {
+    const std::string f =
+        kSrc + "/tests/data/fuzz_crashes/rawlog/oom_string_2gb_at_merge.rawlog";
+    try {
+        rfir::common::CRawlogReader r(f);
+        rfir::common::TRawlogStep st;
+        while (r.next(st)) {
+        }
+        FAIL() << "read as valid";
+    } catch (const std::runtime_error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("entry 4"), std::string::npos) << m;
+        EXPECT_NE(m.find("CObservationBearingRange: sensorLabel length"),
+                  std::string::npos)
+            << m;
+    }
 }

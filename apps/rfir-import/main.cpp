@@ -33,7 +33,9 @@ int run(const std::string& in, const std::string& out, bool lossy, bool quiet) {
         return 2;
     }
     if (!std::filesystem::is_regular_file(in)) {
-        std::cerr << "error: " << in << ": no such file\n";
+        std::cerr << "error: " << in
+                  << (std::filesystem::is_directory(in) ? ": is a directory, not a file\n"
+                                                        : ": no such file\n");
         return 1;
     }
     TConvertOptions opts;

@@ -6,12 +6,14 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRFID.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPosePDF.h>
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <sstream>
@@ -87,10 +89,16 @@ void checkRobotMovement2D(CPeekArchive& a, uint8_t version) {
     const auto method = a.peek<int32_t>();
     using ARM = mrpt::obs::CActionRobotMovement2D;
     if (method == ARM::emScan2DMatching) {
+        // Only a CPosePDFGaussian of version 2 (pose and 6 doubles): the other
+        // PDFs, and its older versions (a CMatrixD), size themselves from
+        // counts MRPT reads unchecked.
         const auto name = peekClassName(a, kArm);
         const auto* id = mrpt::rtti::findRegisteredClass(name);
         if (!id || !id->derivedFrom(CLASS_ID(mrpt::poses::CPosePDF)))
             refuse(kArm, "the pose change is a '" + name + "', not a pose PDF");
+        if (name != "mrpt::poses::CPosePDFGaussian" || a.peek<uint8_t>() != 2)
+            refuse(kArm, "the pose change is a '" + name +
+                             "': only a CPosePDFGaussian (version 2) is read");
         return;
     }
     if (method != ARM::emOdometry)
@@ -116,7 +124,7 @@ void checkRobotMovement2D(CPeekArchive& a, uint8_t version) {
 }
 
 /** A container (CActionCollection, CSensoryFrame) starts with its object count. */
-void checkContainerCount(CPeekArchive& a, const char* cls) {
+uint32_t checkContainerCount(CPeekArchive& a, const char* cls) {
     const auto n = a.peek<uint32_t>();
     // Each object takes at least a name-length byte, a one-letter name, a
     // version byte and the end marker.
@@ -128,6 +136,7 @@ void checkContainerCount(CPeekArchive& a, const char* cls) {
     if (left && n * kMinObjectBytes > *left)
         refuse(cls, "object count " + std::to_string(n) + " exceeds the " +
                         std::to_string(*left) + " bytes left");
+    return n;
 }
 
 /** Reads ahead a whole pose object of class `name` (version `ver`, `n` doubles). */
@@ -155,9 +164,50 @@ void checkOdometry(CPeekArchive& a, uint8_t version) {
                    std::to_string(TReadBounds::kMaxLabelBytes) + " or the bytes left");
 }
 
+/** Reads ahead a string in MRPT's layout (uint32 length, bytes), bounded by
+ * the label bound and the bytes left. */
+void peekLabel(CPeekArchive& a, const char* cls, const char* what) {
+    const auto len = a.peek<uint32_t>();
+    const auto left = bytesLeftInStream();
+    if (len > TReadBounds::kMaxLabelBytes || (left && len > *left))
+        refuse(cls, std::string(what) + " length " + std::to_string(len) +
+                        " is above the bound " +
+                        std::to_string(TReadBounds::kMaxLabelBytes) +
+                        " or the bytes left");
+    std::string s(len, '\0');
+    if (len) a.peekBytes(s.data(), len);
+}
+
+/** A count of `minBytesEach`-byte items, bounded by `maxCount` and the bytes left. */
+uint32_t peekCount(CPeekArchive& a, const char* cls, const char* what, uint32_t maxCount,
+                   uint64_t minBytesEach) {
+    const auto n = a.peek<uint32_t>();
+    const auto left = bytesLeftInStream();
+    if (n > maxCount || (left && n * minBytesEach > *left))
+        refuse(cls, std::string(what) + " " + std::to_string(n) + " is above the bound " +
+                        std::to_string(maxCount) + " or the bytes left");
+    return n;
+}
+
+/** A 3x3 covariance as MRPT writes a CMatrixFixed<double,3,3>: a CMatrixD
+ * object (version 0: uint32 rows and columns, the doubles), end 0x88. MRPT
+ * sizes the matrix from the stored rows and columns before checking them. */
+void peekCovariance(CPeekArchive& a, const char* cls) {
+    if (peekClassName(a, cls) != "mrpt::math::CMatrixD" || a.peek<uint8_t>() != 0)
+        refuse(cls, "a covariance is not a CMatrixD (version 0)");
+    const auto rows = a.peek<uint32_t>(), cols = a.peek<uint32_t>();
+    if (rows != 3 || cols != 3)
+        refuse(cls, "a covariance is " + std::to_string(rows) + "x" +
+                        std::to_string(cols) + ", not 3x3");
+    double m[9];
+    a.peekBytes(m, sizeof(m));
+    if (a.peek<uint8_t>() != 0x88) refuse(cls, "a covariance is cut short");
+}
+
 /** CObservationBearingRange version 3 (MRPT 2.5.8): 4 floats, the sensor pose,
- * the timestamp, validCovariances; without covariances 3 float deviations,
- * then the measurement count (16 bytes each at least). */
+ * the timestamp, validCovariances; without covariances 3 float deviations;
+ * the measurement count, the measurements (16 bytes, then a covariance when
+ * valid), the label. */
 void checkBearingRange(CPeekArchive& a, uint8_t version) {
     constexpr const char* kCls = "mrpt::obs::CObservationBearingRange";
     if (version != 3) return;
@@ -169,15 +219,47 @@ void checkBearingRange(CPeekArchive& a, uint8_t version) {
     if (validCov > 1)
         refuse(kCls, "validCovariances byte " + std::to_string(validCov) +
                          " is neither 0 nor 1");
-    if (validCov) return;  // the layout with covariances is not checked
-    float sd[3];
-    a.peekBytes(sd, sizeof(sd));
-    const auto n = a.peek<uint32_t>();
+    if (!validCov) {
+        float sd[3];
+        a.peekBytes(sd, sizeof(sd));
+    }
+    // A covariance object takes 1 + 20 + 1 + 8 + 72 + 1 bytes.
+    const uint64_t each = validCov ? 16 + 103 : 16;
+    const auto n =
+        peekCount(a, kCls, "measurement count", TMrptReadBounds::kMaxMeasurements, each);
+    for (uint32_t i = 0; i < n; i++) {
+        uint8_t m[16];
+        a.peekBytes(m, sizeof(m));
+        if (validCov) peekCovariance(a, kCls);
+    }
+    peekLabel(a, kCls, "sensorLabel");
+}
+
+/** CObservationRFID version 4 (MRPT 2.5.8): the tag count, the powers
+ * (doubles), the EPCs, the antenna ports (strings), the label. Older
+ * versions store the count as a string. */
+void checkRFID(CPeekArchive& a, uint8_t version) {
+    constexpr const char* kCls = "mrpt::obs::CObservationRFID";
+    if (version > 4) return;
+    uint64_t n = 0;
     const auto left = bytesLeftInStream();
-    if (n > TMrptReadBounds::kMaxMeasurements || (left && uint64_t(n) * 16 > *left))
-        refuse(kCls, "measurement count " + std::to_string(n) + " is above the bound " +
-                         std::to_string(TMrptReadBounds::kMaxMeasurements) +
-                         " or the bytes left");
+    if (version < 4) {
+        const auto len = a.peek<uint32_t>();
+        if (len > 10)
+            refuse(kCls, "tag count string of " + std::to_string(len) + " bytes");
+        std::string s(len, '\0');
+        if (len) a.peekBytes(s.data(), len);
+        n = std::strtoull(s.c_str(), nullptr, 10);  // MRPT reads it with atoi
+        if (n > TReadBounds::kMaxTagsPerReading || (left && n * 16 > *left))
+            refuse(kCls, "tag count " + s + " is above the bound or the bytes left");
+    } else {
+        // Each tag: a double and two string lengths at least.
+        n = peekCount(a, kCls, "tag count", TReadBounds::kMaxTagsPerReading, 16);
+    }
+    std::vector<double> power(n);
+    if (n) a.peekBytes(power.data(), n * sizeof(double));
+    for (uint64_t i = 0; i < 2 * n; i++) peekLabel(a, kCls, "EPC/antenna port");
+    peekLabel(a, kCls, "sensorLabel");
 }
 
 class CGuardedOdometry : public mrpt::obs::CObservationOdometry {
@@ -198,6 +280,15 @@ class CGuardedBearingRange : public mrpt::obs::CObservationBearingRange {
     }
 };
 
+class CGuardedRFID : public mrpt::obs::CObservationRFID {
+  protected:
+    void serializeFrom(CArchive& in, uint8_t version) override {
+        CPeekArchive a(in);
+        checkRFID(a, version);
+        CObservationRFID::serializeFrom(a, version);
+    }
+};
+
 class CGuardedRobotMovement2D : public mrpt::obs::CActionRobotMovement2D {
   protected:
     void serializeFrom(CArchive& in, uint8_t version) override {
@@ -207,22 +298,53 @@ class CGuardedRobotMovement2D : public mrpt::obs::CActionRobotMovement2D {
     }
 };
 
+/** Reads member `i` of a container, refusing a null or foreign object: MRPT
+ * keeps what ReadObject<T> returns, and a null action crashes
+ * CActionCollection::serializeFrom (a null deepcopy_poly_ptr is cloned). */
+template <class T>
+typename T::Ptr readMember(CArchive& a, const char* cls, uint32_t i) {
+    const auto o = a.ReadObject();
+    auto t = std::dynamic_pointer_cast<T>(o);
+    if (!t)
+        refuse(cls, "object " + std::to_string(i) + " is " +
+                        (o ? std::string("a ") + o->GetRuntimeClass()->className
+                           : std::string("nullptr")) +
+                        ", not a " + T::GetRuntimeClassIdStatic().className);
+    return t;
+}
+
+// The containers are read here, member by member, in MRPT 2.5.8's layout
+// (the count, then the objects); other versions go to MRPT, which refuses them.
 class CGuardedActionCollection : public mrpt::obs::CActionCollection {
   protected:
     void serializeFrom(CArchive& in, uint8_t version) override {
+        constexpr const char* kCls = "mrpt::obs::CActionCollection";
         CPeekArchive a(in);
-        checkContainerCount(a, "mrpt::obs::CActionCollection");
-        CActionCollection::serializeFrom(a, version);
+        const auto n = checkContainerCount(a, kCls);
+        if (version != 0) return CActionCollection::serializeFrom(a, version);
+        (void)a.ReadAs<uint32_t>();
+        clear();
+        for (uint32_t i = 0; i < n; i++)
+            insertPtr(readMember<mrpt::obs::CAction>(a, kCls, i));
     }
 };
 
 class CGuardedSensoryFrame : public mrpt::obs::CSensoryFrame {
   protected:
     void serializeFrom(CArchive& in, uint8_t version) override {
+        constexpr const char* kCls = "mrpt::obs::CSensoryFrame";
         CPeekArchive a(in);
-        // Versions 0 and 1 (before 2009) start with a timestamp.
-        if (version >= 2) checkContainerCount(a, "mrpt::obs::CSensoryFrame");
-        CSensoryFrame::serializeFrom(a, version);
+        // Versions 0 and 1 (MRPT before 2009) put other fields before the
+        // count, which sizes the frame as well: not read.
+        if (version < 2)
+            refuse(kCls, "version " + std::to_string(version) +
+                             " (MRPT before 2009) is not read");
+        const auto n = checkContainerCount(a, kCls);
+        if (version != 2) return CSensoryFrame::serializeFrom(a, version);
+        (void)a.ReadAs<uint32_t>();
+        clear();
+        for (uint32_t i = 0; i < n; i++)
+            insert(readMember<mrpt::obs::CObservation>(a, kCls, i));
     }
 };
 
@@ -248,12 +370,12 @@ void registerMrptGuards() {
         // The lookup makes MRPT process its queue of pending registrations now.
         std::ostringstream quiet;
         auto* const old = std::cerr.rdbuf(quiet.rdbuf());
-        for (const auto* id :
-             {guardId<CGuardedRobotMovement2D, CActionRobotMovement2D>(),
-              guardId<CGuardedActionCollection, CActionCollection>(),
-              guardId<CGuardedSensoryFrame, CSensoryFrame>(),
-              guardId<CGuardedOdometry, CObservationOdometry>(),
-              guardId<CGuardedBearingRange, CObservationBearingRange>()}) {
+        for (const auto* id : {guardId<CGuardedRobotMovement2D, CActionRobotMovement2D>(),
+                               guardId<CGuardedActionCollection, CActionCollection>(),
+                               guardId<CGuardedSensoryFrame, CSensoryFrame>(),
+                               guardId<CGuardedOdometry, CObservationOdometry>(),
+                               guardId<CGuardedBearingRange, CObservationBearingRange>(),
+                               guardId<CGuardedRFID, CObservationRFID>()}) {
             mrpt::rtti::registerClass(id);
             mrpt::rtti::findRegisteredClass(id->className);
         }

@@ -3,10 +3,14 @@
 
 #include <mrpt/system/md5.h>
 
+#include <fcntl.h>
 #include <fnmatch.h>
+#include <signal.h>
+#include <stdio.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -81,6 +85,7 @@ COutputFolder::COutputFolder(std::string outDir, std::vector<std::string> patter
                     "'s output folders (the whole folder is replaced)");
         }
     }
+    removeLeftovers();
     staging_ = outDir_ + ".tmp." + pidSuffix();
     freshFolder(staging_);
 }
@@ -99,8 +104,44 @@ std::vector<std::string> COutputFolder::files() const {
     return sorted(files_);
 }
 
+/** The folders "<outDir>.tmp.<pid>" / "<outDir>.old.<pid>" that runs killed
+ * before the end left (their pid is gone). A killed commit of the two-rename
+ * fallback leaves outDir missing and the earlier set in ".old.": put back. */
+void COutputFolder::removeLeftovers() const {
+    const fs::path dir = fs::path(outDir_).parent_path().empty()
+                             ? fs::path(".")
+                             : fs::path(outDir_).parent_path();
+    const std::string base = fs::path(outDir_).filename().string();
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const std::string n = e.path().filename().string();
+        for (const std::string kind : {".tmp.", ".old."}) {
+            if (n.rfind(base + kind, 0) != 0) continue;
+            const std::string pid = n.substr(base.size() + kind.size());
+            if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos ||
+                pid.size() > 9)
+                continue;
+            if (::kill(std::stoi(pid), 0) == 0 || errno != ESRCH) continue;  // alive
+            std::error_code ec2;
+            if (kind == ".old." && !fs::exists(outDir_))
+                fs::rename(e.path(), outDir_, ec2);
+            else
+                fs::remove_all(e.path(), ec2);
+        }
+    }
+}
+
 void COutputFolder::commit() {
     std::error_code ec;
+    // One atomic exchange when the folder exists: outDir always holds one
+    // whole set, even if the process is killed here.
+    if (fs::is_directory(outDir_) && ::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD,
+                                                 outDir_.c_str(), RENAME_EXCHANGE) == 0) {
+        committed_ = true;
+        fs::remove_all(staging_, ec);  // now the earlier set
+        return;
+    }
+    // No folder yet, or a file system without RENAME_EXCHANGE: two renames.
     const std::string old = outDir_ + ".old." + pidSuffix();
     fs::remove_all(old, ec);
     const bool hadOld = fs::exists(outDir_);

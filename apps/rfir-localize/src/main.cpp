@@ -33,6 +33,8 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
         const std::string& cmd) {
     namespace fs = std::filesystem;
     rfir::localize::loadConfig(cfg, emitters);
+    if (fs::is_directory(cfg.rawlogPath))
+        throw std::runtime_error(cfg.rawlogPath + ": is a directory, not a rawlog file");
     if (!fs::is_regular_file(cfg.rawlogPath))
         throw std::runtime_error(cfg.rawlogPath + ": rawlog not found");
     std::error_code ec;

@@ -138,7 +138,8 @@ void CIniSection::declare(const std::string& key, const std::string& type,
 }
 
 double CIniSection::getDouble(const std::string& key, double def, const TRange& r) const {
-    record(section_, key, "real", num(def), r.str());
+    // Formatting the range costs more than the read: only when recording.
+    if (gRecording) record(section_, key, "real", num(def), r.str());
     if (!has(key)) return def;
     const std::string t = raw(key);
     double v = 0;

@@ -3,7 +3,9 @@
  * MRPT 2.5.8's readers trust the file: CActionRobotMovement2D crashes
  * (SIGSEGV) on an estimationMethod other than emOdometry followed by anything
  * but a pose PDF, and allocates from unchecked counts (Thrun model particles,
- * the objects of a CActionCollection or CSensoryFrame). These guards replace
+ * the objects of a CActionCollection or CSensoryFrame, the counts and strings
+ * of CObservationOdometry, CObservationBearingRange, CObservationRFID). These
+ * guards replace
  * those classes in MRPT's class registry by subclasses that check the fields
  * first, then let MRPT parse the same bytes; objects keep MRPT's class (and
  * are written exactly as before). See docs/hardening.md. */

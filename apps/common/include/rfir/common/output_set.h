@@ -24,12 +24,14 @@ class COutputFolder {
     std::string file(const std::string& name);
     /** The names given to file() so far, sorted. */
     std::vector<std::string> files() const;
-    /** Moves an earlier set aside, renames the staging folder to outDir and
-     * removes the earlier set. */
+    /** Exchanges the staging folder with an earlier set in one atomic rename
+     * (RENAME_EXCHANGE; else moves the earlier set aside first), then removes
+     * the earlier set. */
     void commit();
     const std::string& outDir() const { return outDir_; }
 
   private:
+    void removeLeftovers() const;
     std::string outDir_, staging_, program_;
     std::vector<std::string> files_;
     bool committed_ = false;

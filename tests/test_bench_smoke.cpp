@@ -44,7 +44,6 @@ size_t count(const std::string& s, const std::string& what) {
     return n;
 }
 
-
 long fileSize(const std::string& p) {
     struct stat st;
     return ::stat(p.c_str(), &st) == 0 ? long(st.st_size) : -1;

@@ -65,10 +65,10 @@ std::string toMarkdown(const TBenchReport& r) {
          "---: | "
          "---: | ---: | ---: | ---: |\n";
     for (const auto& x : r.realtime)
-        o << "| " << methodLabel(x.method) << " | " << x.M << " | " << num(x.simSeconds, 0)
-          << " | " << x.steps << " | " << x.tagsInWorld << " | " << x.tagsMapped << " | "
-          << x.detections << " | " << num(x.slamSeconds, 2) << " | "
-          << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " |\n";
+        o << "| " << methodLabel(x.method) << " | " << x.M << " | "
+          << num(x.simSeconds, 0) << " | " << x.steps << " | " << x.tagsInWorld << " | "
+          << x.tagsMapped << " | " << x.detections << " | " << num(x.slamSeconds, 2)
+          << " | " << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " |\n";
     o << "\n**Targets**\n\n| target | result | numbers |\n| --- | --- | --- |\n";
     for (const auto& t : r.targets)
         o << "| " << t.name << " | "

@@ -114,8 +114,7 @@ TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
             const auto in = drive.timedStep(o.warmupUpdates + k);
             us.push_back(1e6 * st.step(in));
             wall.push_back(1e6 * st.lastWall);
-            if (trace)
-                std::fprintf(stderr, "%zu %.1f\n", k, us.back());
+            if (trace) std::fprintf(stderr, "%zu %.1f\n", k, us.back());
         }
         r.updates = us.size();
         r.medianUs = percentile(us, 0.5);

@@ -7,24 +7,22 @@
 
 #include <cmath>
 
-namespace rfir::sim::detail
-{
+namespace rfir::sim::detail {
 COdometrySimulator::COdometrySimulator(const TOdometryNoise& n,
                                        rfir::models::TRandom& rng)
-    : n_(n), rng_(rng)
-{
+    : n_(n), rng_(rng) {
     s_ = rng_.drawGaussian1D(0, n_.scaleSigma);
     r_ = rng_.drawGaussian1D(0, n_.rotScaleSigma);
     h_ = rng_.drawGaussian1D(0, n_.headingDriftSigma);
 }
 
-mrpt::poses::CPose2D COdometrySimulator::noisyIncrement(const mrpt::poses::CPose2D& inc)
-{
+mrpt::poses::CPose2D COdometrySimulator::noisyIncrement(const mrpt::poses::CPose2D& inc) {
     const double dx = inc.x(), dy = inc.y(), dphi = inc.phi();
     const double d = std::hypot(dx, dy), a = std::abs(dphi);
     if (d == 0 && a == 0) return inc;
     const double sxy = n_.kXY * std::sqrt(d);
-    const double sphi = std::sqrt(n_.kPhiRot * n_.kPhiRot * a + n_.kPhiXY * n_.kPhiXY * d);
+    const double sphi =
+        std::sqrt(n_.kPhiRot * n_.kPhiRot * a + n_.kPhiXY * n_.kPhiXY * d);
     const double nx = rng_.drawGaussian1D(0, sxy), ny = rng_.drawGaussian1D(0, sxy);
     const double np = rng_.drawGaussian1D(0, sphi);
     return {(1 + s_) * dx + nx, (1 + s_) * dy + ny, (1 + r_) * dphi + h_ * d + np};

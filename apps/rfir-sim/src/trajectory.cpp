@@ -9,21 +9,25 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace rfir::sim::detail
-{
-namespace
-{
+namespace rfir::sim::detail {
+namespace {
 using Shape = std::vector<std::pair<double, double>>;
 
 /** The five predefined closed shapes, in unit coordinates of the inset area
  * (the first corner is the start; the path returns to it). */
-const Shape& predefinedShape(int n)
-{
+const Shape& predefinedShape(int n) {
     static const Shape shapes[5] = {
         // 1: rectangle
         {{0, 0}, {1, 0}, {1, 1}, {0, 1}},
         // 2: serpentine (three passes along x), back along the left side
-        {{0, 0}, {1, 0}, {1, 1. / 3}, {0, 1. / 3}, {0, 2. / 3}, {1, 2. / 3}, {1, 1}, {0, 1}},
+        {{0, 0},
+         {1, 0},
+         {1, 1. / 3},
+         {0, 1. / 3},
+         {0, 2. / 3},
+         {1, 2. / 3},
+         {1, 1},
+         {0, 1}},
         // 3: L shape
         {{0, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}},
         // 4: diamond (diagonal motion)
@@ -34,20 +38,19 @@ const Shape& predefinedShape(int n)
     return shapes[n - 1];
 }
 
-double wrapToPi(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+double wrapToPi(double a) {
+    return std::atan2(std::sin(a), std::cos(a));
+}
 }  // namespace
 
 std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, double y0,
                                         double x1, double y1,
-                                        rfir::models::TRandom& rng)
-{
+                                        rfir::models::TRandom& rng) {
     std::vector<TPoseU> w;
-    if (t.kind == TTrajectoryConfig::Kind::Random)
-    {
+    if (t.kind == TTrajectoryConfig::Kind::Random) {
         // Waypoints at least 0.3 m apart, so that no segment degenerates.
         const double minSep = std::min(0.3, 0.25 * std::min(x1 - x0, y1 - y0));
-        while (int(w.size()) < t.waypoints)
-        {
+        while (int(w.size()) < t.waypoints) {
             TPoseU p;
             p.x = rng.drawUniform(x0, x1);
             p.y = rng.drawUniform(y0, y1);
@@ -60,13 +63,13 @@ std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, d
     const Shape& s = predefinedShape(
         t.kind == TTrajectoryConfig::Kind::Loop ? 1 : std::clamp(t.predefined, 1, 5));
     for (int lap = 0; lap < t.laps; lap++)
-        for (const auto& [u, v] : s) w.push_back({x0 + u * (x1 - x0), y0 + v * (y1 - y0), 0});
+        for (const auto& [u, v] : s)
+            w.push_back({x0 + u * (x1 - x0), y0 + v * (y1 - y0), 0});
     w.push_back(w.front());  // close the last lap
     return w;
 }
 
-CPlan::CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng)
-{
+CPlan::CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng) {
     const auto& tc = cfg.trajectory;
     const double m = tc.margin;
     wps_ = trajectoryWaypoints(tc, cfg.areaMinX + m, cfg.areaMinY + m, cfg.areaMaxX - m,
@@ -81,10 +84,8 @@ CPlan::CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng)
     cur_.phi = tc.startPhi;
     if (tc.rotation == TTrajectoryConfig::Rotation::Follow && wps_.size() > 1)
         cur_.phi = std::atan2(wps_[1].y - cur_.y, wps_[1].x - cur_.x);
-    for (size_t i = 1; i < wps_.size(); i++)
-    {
-        if (tc.rotation == TTrajectoryConfig::Rotation::Follow)
-        {
+    for (size_t i = 1; i < wps_.size(); i++) {
+        if (tc.rotation == TTrajectoryConfig::Rotation::Follow) {
             const double dir = std::atan2(wps_[i].y - cur_.y, wps_[i].x - cur_.x);
             if (std::abs(wrapToPi(dir - cur_.phi)) > 1e-9)
                 addTurn(cur_.phi + wrapToPi(dir - cur_.phi), tc.turnRate);
@@ -94,32 +95,29 @@ CPlan::CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng)
     if (segs_.empty()) throw std::invalid_argument("[trajectory] the path is empty");
 }
 
-void CPlan::addTurn(double phi, double rate)
-{
+void CPlan::addTurn(double phi, double rate) {
     TSegment s{t_, t_ + std::abs(phi - cur_.phi) / rate, cur_, cur_};
     s.to.phi = phi;
     segs_.push_back(s);
     cur_ = s.to, t_ = s.t1;
 }
 
-void CPlan::addPause(double seconds)
-{
+void CPlan::addPause(double seconds) {
     segs_.push_back({t_, t_ + seconds, cur_, cur_});
     spots_.push_back(t_ + 0.5 * seconds);
     t_ += seconds;
 }
 
 void CPlan::addTranslation(const TPoseU& to, const TSimConfig& cfg, double spotStep,
-                           double& arcDone, double& nextSpot)
-{
+                           double& arcDone, double& nextSpot) {
     const auto& tc = cfg.trajectory;
-    const double spin = tc.rotation == TTrajectoryConfig::Rotation::Spin ? tc.spinRate : 0;
+    const double spin =
+        tc.rotation == TTrajectoryConfig::Rotation::Spin ? tc.spinRate : 0;
     const double len = std::hypot(to.x - cur_.x, to.y - cur_.y);
     if (len < 1e-12) return;
     const double ux = (to.x - cur_.x) / len, uy = (to.y - cur_.y) / len;
     double done = 0;  // along this segment
-    while (done < len)
-    {
+    while (done < len) {
         // Go to the next spot on this segment, or to its end.
         const bool spot = nextSpot >= 0 && nextSpot < arcDone + len;
         const double stop = spot ? nextSpot - arcDone : len;
@@ -130,8 +128,7 @@ void CPlan::addTranslation(const TPoseU& to, const TSimConfig& cfg, double spotS
         s.to.phi = cur_.phi + spin * dt;
         if (dt > 0) segs_.push_back(s);
         cur_ = s.to, t_ = s.t1, done = stop;
-        if (spot)
-        {
+        if (spot) {
             addPause(tc.spotPause);
             nextSpot += spotStep;
         }
@@ -140,8 +137,7 @@ void CPlan::addTranslation(const TPoseU& to, const TSimConfig& cfg, double spotS
     arcDone += len;
 }
 
-mrpt::poses::CPose2D CPlan::at(double t) const
-{
+mrpt::poses::CPose2D CPlan::at(double t) const {
     if (t <= 0) return segs_.front().from.pose();
     if (t >= duration()) return segs_.back().to.pose();
     auto it = std::upper_bound(segs_.begin(), segs_.end(), t,

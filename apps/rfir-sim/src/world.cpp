@@ -7,10 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace rfir::sim::detail
-{
-uint32_t streamSeed(uint64_t seed, uint64_t stream)
-{
+namespace rfir::sim::detail {
+uint32_t streamSeed(uint64_t seed, uint64_t stream) {
     // splitmix64 of (seed, stream): well-spread, independent sub-seeds.
     uint64_t z = seed * 0x9E3779B97F4A7C15ULL + (stream + 1) * 0xBF58476D1CE4E5B9ULL;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
@@ -19,16 +17,14 @@ uint32_t streamSeed(uint64_t seed, uint64_t stream)
     return uint32_t(z ^ (z >> 32));
 }
 
-namespace
-{
+namespace {
 int64_t bucketKey(int64_t i, int64_t j) {
     // Shifted as unsigned: a left shift of a negative value is undefined.
     return int64_t((uint64_t(i) << 32) ^ (uint64_t(j) & 0xffffffffULL));
 }
 
 /** Grid coordinates of n = floor(len / pitch) points centred in [lo, lo + len]. */
-std::vector<double> gridLine(double lo, double len, double pitch)
-{
+std::vector<double> gridLine(double lo, double len, double pitch) {
     const int n = std::max(1, int(std::floor(len / pitch + 1e-9)));
     const double off = lo + 0.5 * (len - (n - 1) * pitch);
     std::vector<double> v(n);
@@ -36,21 +32,18 @@ std::vector<double> gridLine(double lo, double len, double pitch)
     return v;
 }
 
-void buildTags(const TSimConfig& cfg, uint64_t seed, TWorld& w)
-{
+void buildTags(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
     rfir::models::TRandom rng(streamSeed(seed, 1));
     const double pitch = 1.0 / std::sqrt(cfg.rfid.density);
     const auto xs = gridLine(cfg.areaMinX, cfg.areaMaxX - cfg.areaMinX, pitch);
     const auto ys = gridLine(cfg.areaMinY, cfg.areaMaxY - cfg.areaMinY, pitch);
     std::set<std::string> used;
     for (double y : ys)
-        for (double x : xs)
-        {
+        for (double x : xs) {
             TPoint t;
             t.x = x + rng.drawGaussian1D(0, cfg.rfid.placementSigma);
             t.y = y + rng.drawGaussian1D(0, cfg.rfid.placementSigma);
-            do
-            {
+            do {
                 char hex[9];
                 std::snprintf(hex, sizeof(hex), "%08X", unsigned(rng.drawUniform32bit()));
                 t.id = cfg.rfid.uidPrefix + hex;
@@ -60,8 +53,7 @@ void buildTags(const TSimConfig& cfg, uint64_t seed, TWorld& w)
     w.indexTags(0.5);
 }
 
-void buildEmitters(const TSimConfig& cfg, uint64_t seed, TWorld& w)
-{
+void buildEmitters(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
     rfir::models::TRandom rng(streamSeed(seed, 2));
     const auto& ir = cfg.ir;
     rfir::ir::TLatticeParams lp;
@@ -72,43 +64,37 @@ void buildEmitters(const TSimConfig& cfg, uint64_t seed, TWorld& w)
     lp.withRepeated = ir.withRepeated;
     lp.withUnique = ir.withUnique;
     lp.allUnique = ir.allUnique;
-    try
-    {
+    try {
         w.emitters = rfir::ir::makeEmitterLattice(
             {cfg.areaMinX, cfg.areaMinY, cfg.areaMaxX, cfg.areaMaxY}, lp);
-    }
-    catch (const std::invalid_argument& e)
-    {
+    } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(std::string("[ir] ") + e.what());
     }
     for (auto& e : w.emitters)
-        if (ir.heightSpread > 0) e.z += rng.drawUniform(-ir.heightSpread, ir.heightSpread);
+        if (ir.heightSpread > 0)
+            e.z += rng.drawUniform(-ir.heightSpread, ir.heightSpread);
     w.emitterFailed.assign(w.emitters.size(), false);
-    for (const auto& f : ir.failed)
-    {
+    for (const auto& f : ir.failed) {
         bool found = false;
         std::istringstream is(f);
         double x = 0, y = 0;
         const bool isXY = bool(is >> x >> y);
-        for (size_t i = 0; i < w.emitters.size(); i++)
-        {
+        for (size_t i = 0; i < w.emitters.size(); i++) {
             const auto& e = w.emitters[i];
-            const bool hit =
-                isXY ? std::hypot(e.x - x, e.y - y) < 0.05 : e.id == f;
+            const bool hit = isXY ? std::hypot(e.x - x, e.y - y) < 0.05 : e.id == f;
             if (hit) w.emitterFailed[i] = found = true;
         }
         if (!found)
-            throw std::invalid_argument("[ir] failed: no emitter '" + f + "' in the lattice");
+            throw std::invalid_argument("[ir] failed: no emitter '" + f +
+                                        "' in the lattice");
     }
 }
 
-void buildLandmarks(const TSimConfig& cfg, uint64_t seed, TWorld& w)
-{
+void buildLandmarks(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
     rfir::models::TRandom rng(streamSeed(seed, 3));
     const double area = (cfg.areaMaxX - cfg.areaMinX) * (cfg.areaMaxY - cfg.areaMinY);
     const int n = std::max(1, int(std::lround(cfg.rb.density * area)));
-    for (int i = 0; i < n; i++)
-    {
+    for (int i = 0; i < n; i++) {
         char id[16];
         std::snprintf(id, sizeof(id), "L%04d", i + 1);
         w.landmarks.push_back({id, rng.drawUniform(cfg.areaMinX, cfg.areaMaxX),
@@ -117,8 +103,7 @@ void buildLandmarks(const TSimConfig& cfg, uint64_t seed, TWorld& w)
 }
 }  // namespace
 
-void TWorld::indexTags(double cell)
-{
+void TWorld::indexTags(double cell) {
     cell_ = cell;
     buckets_.clear();
     for (size_t k = 0; k < tags.size(); k++)
@@ -127,23 +112,21 @@ void TWorld::indexTags(double cell)
             .push_back(k);
 }
 
-void TWorld::tagsNear(double x, double y, double r, std::vector<size_t>& out) const
-{
+void TWorld::tagsNear(double x, double y, double r, std::vector<size_t>& out) const {
     out.clear();
     const int64_t i0 = int64_t(std::floor((x - r) / cell_)),
                   i1 = int64_t(std::floor((x + r) / cell_));
     const int64_t j0 = int64_t(std::floor((y - r) / cell_)),
                   j1 = int64_t(std::floor((y + r) / cell_));
     for (int64_t j = j0; j <= j1; j++)
-        for (int64_t i = i0; i <= i1; i++)
-        {
+        for (int64_t i = i0; i <= i1; i++) {
             auto it = buckets_.find(bucketKey(i, j));
-            if (it != buckets_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+            if (it != buckets_.end())
+                out.insert(out.end(), it->second.begin(), it->second.end());
         }
 }
 
-TWorld buildWorld(const TSimConfig& cfg, uint64_t seed)
-{
+TWorld buildWorld(const TSimConfig& cfg, uint64_t seed) {
     TWorld w;
     if (cfg.rfid.enabled) buildTags(cfg, seed, w);
     if (cfg.ir.enabled) buildEmitters(cfg, seed, w);

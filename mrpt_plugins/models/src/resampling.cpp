@@ -54,8 +54,7 @@ double effectiveSampleSize(const std::vector<double>& logWeights) {
 }
 
 std::vector<size_t> resampleIndices(const std::vector<double>& logWeights, size_t n,
-                                    ResamplingScheme scheme,
-                                    rfir::models::TRandom& rng) {
+                                    ResamplingScheme scheme, rfir::models::TRandom& rng) {
     const std::vector<double> w = normalisedWeights(logWeights);
     std::vector<double> cdf(w.size());
     double acc = 0;

@@ -38,19 +38,15 @@
 #include <string>
 #include <vector>
 
-namespace rfir::sim
-{
+namespace rfir::sim {
 /** Trajectory of the robot ([trajectory] section). */
-struct TTrajectoryConfig
-{
-    enum class Kind
-    {
+struct TTrajectoryConfig {
+    enum class Kind {
         Loop,        //!< rectangle inset by `margin` in the area, `laps` times
         Predefined,  //!< one of five closed shapes (`predefined` = 1..5), `laps` times
         Random       //!< `waypoints` uniform random waypoints inside the inset area
     };
-    enum class Rotation
-    {
+    enum class Rotation {
         None,    //!< heading constant: the omnidirectional robot only translates
         Follow,  //!< turns in place at each corner to face the next segment
         Spin     //!< rotates at `spinRate` while translating
@@ -75,8 +71,7 @@ struct TTrajectoryConfig
  * path is moved rigidly with it). The wheels do not turn while carried: odometry
  * records go on unchanged (Frozen) or stop until it is put down (Stop). The
  * lifted robot's floor readers read nothing. */
-struct TKidnapConfig
-{
+struct TKidnapConfig {
     enum class Odometry { Frozen, Stop };
     bool enabled = false;
     double time = 60;
@@ -93,38 +88,34 @@ struct TKidnapConfig
  * with per-run biases s ~ N(0, scaleSigma), r ~ N(0, rotScaleSigma),
  * h ~ N(0, headingDriftSigma) [rad/m]. Variances grow with the distance
  * (not the step count), so the drift does not depend on dt. */
-struct TOdometryNoise
-{
-    double kXY = 0.01;               //!< m / sqrt(m)
-    double kPhiRot = 0.02;           //!< rad / sqrt(rad)
-    double kPhiXY = 0.005;           //!< rad / sqrt(m)
-    double scaleSigma = 0.01;        //!< translation scale bias (fraction)
-    double rotScaleSigma = 0.01;     //!< rotation scale bias (fraction)
+struct TOdometryNoise {
+    double kXY = 0.01;                 //!< m / sqrt(m)
+    double kPhiRot = 0.02;             //!< rad / sqrt(rad)
+    double kPhiXY = 0.005;             //!< rad / sqrt(m)
+    double scaleSigma = 0.01;          //!< translation scale bias (fraction)
+    double rotScaleSigma = 0.01;       //!< rotation scale bias (fraction)
     double headingDriftSigma = 0.005;  //!< rad per metre travelled
 
     /** Every noise parameter times k (the odometry sweeps). */
-    void scale(double k)
-    {
-        for (double* v : {&kXY, &kPhiRot, &kPhiXY, &scaleSigma, &rotScaleSigma,
-                          &headingDriftSigma})
+    void scale(double k) {
+        for (double* v :
+             {&kXY, &kPhiRot, &kPhiXY, &scaleSigma, &rotScaleSigma, &headingDriftSigma})
             *v *= k;
     }
 };
 
 /** Tag carpet ([rfid] section): a square grid of `density` tags/m^2 over the
  * area, each tag displaced by N(0, placementSigma) per axis. */
-struct TRFIDConfig
-{
+struct TRFIDConfig {
     bool enabled = true;
     double density = 16;
     double placementSigma = 0.005;
-    double missProbability = 0;  //!< a tag inside a square is missed with it
+    double missProbability = 0;          //!< a tag inside a square is missed with it
     std::string uidPrefix = "E0040150";  //!< + 8 random hex digits per tag
 };
 
 /** Ceiling emitters and receivers ([ir] section); thesis chapter 5. */
-struct TIRConfig
-{
+struct TIRConfig {
     enum class Output { Decoded, Raw };
     bool enabled = false;
     double pitch = 0.8;            //!< same-type emitter spacing (m)
@@ -134,43 +125,41 @@ struct TIRConfig
     std::vector<uint8_t> repeatedCodes{1, 2, 3, 4};
     int uniqueCodesPerId = 2;
     bool withRepeated = true, withUnique = true;
-    bool allUnique = false;        //!< unique IDs at every position (thesis 5.4.1)
-    double visibleRadius = 0.28;   //!< horizontal radius an emitter is seen in
-    double voltSigma = 0.03;       //!< V noise on the decoded voltage
+    bool allUnique = false;       //!< unique IDs at every position (thesis 5.4.1)
+    double visibleRadius = 0.28;  //!< horizontal radius an emitter is seen in
+    double voltSigma = 0.03;      //!< V noise on the decoded voltage
     Output output = Output::Decoded;
     double rateHz = 8000;
     int samples = 800;
-    double rawNoiseSigma = 0.05;   //!< V noise per raw sample
-    double rawOffset = 0.4;        //!< ambient offset (V)
-    double period = 0.1;           //!< seconds between IR readings
+    double rawNoiseSigma = 0.05;  //!< V noise per raw sample
+    double rawOffset = 0.4;       //!< ambient offset (V)
+    double period = 0.1;          //!< seconds between IR readings
     /** Failed emitters: an ID (all emitters with it) or "x y" (the emitter
      * there), one per entry. */
     std::vector<std::string> failed;
 };
 
 /** Range-and-bearing sensor and landmarks ([range_bearing] section), SPEC 7. */
-struct TRBConfig
-{
+struct TRBConfig {
     bool enabled = false;
-    double density = 4;              //!< landmarks per m^2, uniform over the area
-    double sigmaRange = 0.010;       //!< m
+    double density = 4;         //!< landmarks per m^2, uniform over the area
+    double sigmaRange = 0.010;  //!< m
     double sigmaBearing = 0.05235987755982989;  //!< rad (3 deg)
 };
 
 /** Every parameter of a run; the defaults are the seeds' 60 mm / 16 tags/m^2
  * rectangular loop (x3). Sections (the INI of a run): [simulation], [robot],
  * [trajectory], [kidnap], [odometry], [rfid], [ir], [range_bearing]. */
-struct TSimConfig : public mrpt::config::CLoadableOptions
-{
+struct TSimConfig : public mrpt::config::CLoadableOptions {
     TSimConfig();
 
     // [simulation]
-    double dt = 0.1;           //!< sensing period (s)
+    double dt = 0.1;  //!< sensing period (s)
     /** Clock reading at the first step (s, > 0: MRPT takes a zero timestamp as
      * invalid). Step k is at startTime + k dt; kidnap times, spot pauses and
      * maxDuration count from the start. */
     double startTime = 1.0;
-    double maxDuration = 0;    //!< > 0: cut the run there (s)
+    double maxDuration = 0;  //!< > 0: cut the run there (s)
     double areaMinX = 0, areaMinY = 0, areaMaxX = 4, areaMaxY = 4;  //!< m
 
     // [robot]
@@ -210,8 +199,7 @@ const std::vector<std::string>& simConfigSections();
 std::vector<rfir::obs::TRFIDReader> ringReaderLayout(double ringRadius, double halfSize);
 
 /** One sensing instant. */
-struct TSimStep
-{
+struct TSimStep {
     double t = 0;
     std::optional<mrpt::poses::CPose2D> odometry;  //!< absolute odometry pose
     /** Labels RFID, IR, RB; IR and RB only when something is in view, in the
@@ -221,8 +209,7 @@ struct TSimStep
     mrpt::poses::CPose2D truePose;
 };
 
-struct TSimOutput
-{
+struct TSimOutput {
     rfir::obs::CObservationLogHeader header;
     std::vector<TSimStep> steps;
     rfir::common::TPath2D groundTruth;  //!< true pose at every step

@@ -1,5 +1,6 @@
 /* rfir_slam: parts checked alone (copy-on-write trie, EKF by hand, FastSLAM
  * copy counting, INI rejection, sensor resetting geometry). */
+#include <rfir/models/random.h>
 #include <rfir/slam/CFastSLAMParticles.h>
 #include <rfir/slam/kidnap.h>
 #include <rfir/slam/persistent_vector.h>
@@ -156,7 +157,7 @@ TEST(SlamConfig, BadSettingsNameTheKey) {
 }
 
 TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
-    mrpt::random::CRandomGenerator rng(5);
+    rfir::models::TRandom rng(5);
     TAnchor a;
     a.det.id = "T";
     a.det.a = 0.2;

@@ -198,7 +198,7 @@ TEST(TagMap, RangeBearingLandmarks) {
     m.insertionOptions.estimator = rfir::maps::TTagEstimatorKind::FixedLagSmoother;
     m.insertionOptions.smootherStepSigma = 0.002;
     const mrpt::math::TPoint2D truth(1.2, 0.4);
-    mrpt::random::CRandomGenerator noise(9);
+    rfir::models::TRandom noise(9);
     const auto& rb = m.likelihoodOptions.rangeBearing;
     auto observe = [&](const mrpt::math::TPose2D& robot, int32_t id) {
         auto o = mrpt::obs::CObservationBearingRange::Create();

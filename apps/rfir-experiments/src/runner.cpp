@@ -84,8 +84,6 @@ TRunResult runMethod(const std::string& configDir, const TDataSet& data,
                      bool keepOutputs) {
     auto cfg = slamConfig(configDir, m, point);
     cfg.seed = seed;
-    // MRPT's particle filter draws from the global generator.
-    mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
     auto engine = rfir::slam::makeEngine(cfg, data.sim.header);
     const auto run = rfir::slam::runEngine(*engine, data.sim.groundTruth.front().pose,
                                            rfir::slam::inputsFromSteps(data.sim.steps));

@@ -2,12 +2,12 @@
 #include <rfir/models/ini_reader.h>
 #include <rfir/models/resampling.h>
 #include <rfir/slam/CRobotPoseParticles.h>
+#include <rfir/slam/robot_resampling.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
 
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/obs/CActionCollection.h>
-#include <mrpt/random/RandomGenerators.h>
 #include <rfir/models/random.h>
 
 #include <cmath>
@@ -95,17 +95,19 @@ class CTagMapEngine : public CSlamEngine {
   public:
     CTagMapEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
         : cfg_(c), hdr_(h), kidnap_(c.kidnap) {
-        filter_.m_options = c.slam.pfOptions();
-        rng_.randomize(c.seed + 7919);
+        filter_.m_options = withoutMrptResampling(c.slam.pfOptions());
     }
     void reset(const mrpt::poses::CPose2D& start) override {
+        // The run's one generator (--seed): motion, resampling, kidnap
+        // resetting; the map's per-step streams are seeded from it.
+        rng_.randomize(cfg_.seed);
         map_.clear();
         map_.insertionOptions = cfg_.tagmap->insertion;
         map_.likelihoodOptions = cfg_.tagmap->likelihood;
-        map_.setRandomSeed(cfg_.seed);
+        map_.setRandomSeed(rng_.drawUniform64bit());
         map_.setLandmarkNames(hdr_.rbLandmarkNames);
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
-                  cfg_.slam.start_std_phi);
+                  cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
         pose_ = start;
     }
@@ -230,7 +232,8 @@ void CTagMapEngine::step(const TSlamInput& in) {
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement)
         acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
-    filter_.executeOn(pf_, &acts, nullptr);
+    filter_.executeOn(pf_, &acts, nullptr);  // motion, kidnap, weighing, normalising
+    resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
     pf_.afterMotion = nullptr;
     pf_.logLikelihood = nullptr;
     reads_.clear();

@@ -10,6 +10,8 @@
 #include <mrpt/bayes/CParticleFilterData.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <rfir/models/random.h>
+
 #include <functional>
 #include <vector>
 
@@ -23,8 +25,10 @@ class CRobotPoseParticles
       public mrpt::bayes::CParticleFilterDataImpl<CRobotPoseParticles,
                                                   TPoseParticleData::CParticleList> {
   public:
-    /** M particles at `start`, with Gaussian spread (std) in xy and heading. */
-    void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi);
+    /** M particles at `start`, with Gaussian spread (std) in xy and heading;
+     * `rng` (the engine's, outliving this set) draws their motion too. */
+    void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi,
+               rfir::models::TRandom& rng);
 
     /** Log-likelihood of particle i at its moved pose, for the next executeOn
      * step (empty: motion only). */
@@ -52,6 +56,9 @@ class CRobotPoseParticles
     /** @} */
 
   protected:
+    rfir::models::TRandom* m_rng = nullptr;  //!< the engine's generator
+    double m_ess = -1;  //!< ESS computed by normalizeWeights; < 0: stale
+
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,
         const mrpt::obs::CSensoryFrame* observation,

@@ -69,9 +69,10 @@ TEST(SlamEKF, RangeBearingInverseMatchesPrediction) {
 }
 
 TEST(SlamFastSLAM, ResamplingSharesLandmarks) {
-    mrpt::random::getRandomGenerator().randomize(3);
+    mrpt::random::getRandomGenerator().randomize(3);  // MRPT's own resampling here
+    rfir::models::TRandom rng(3);
     CFastSLAMParticles pf;
-    pf.reset(mrpt::poses::CPose2D(), 200, 0.01, 0.01);
+    pf.reset(mrpt::poses::CPose2D(), 200, 0.01, 0.01, rng);
     std::vector<TDetection> dets;
     for (int k = 0; k < 50; k++) {
         TDetection d;

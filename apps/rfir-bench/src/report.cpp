@@ -132,7 +132,7 @@ void printPlain(const TBenchReport& r, std::ostream& out) {
         out << row("  %s, M = %zu, %zu steps: plain %.1f us (%zu tags)", p.log.c_str(),
                    p.M, p.steps, p.plainUs, p.plainTags);
         for (size_t k = 0; k < p.methods.size(); k++)
-            out << row("; %s %.1f us (x %.2f, %zu tags)", methodLabel(p.methods[k]),
+            out << row("; %s %.1f us (x %.2f, %zu tags)", p.methods[k].c_str(),
                        p.engineUs[k], p.plainUs > 0 ? p.engineUs[k] / p.plainUs : 0,
                        p.engineTags[k]);
         out << "\n";
@@ -181,9 +181,11 @@ std::string toJson(const TBenchReport& r) {
     for (size_t i = 0; i < r.plain.size(); i++) {
         const auto& p = r.plain[i];
         o << (i ? ", " : "") << "{\"log\": \"" << jsonEscape(p.log) << "\", \"M\": " << p.M
-          << ", \"steps\": " << p.steps << ", \"plain_us_per_step\": " << p.plainUs;
+          << ", \"steps\": " << p.steps << ", \"plain_us_per_step\": " << p.plainUs
+          << ", \"plain_tags\": " << p.plainTags;
         for (size_t k = 0; k < p.methods.size(); k++)
-            o << ", \"" << p.methods[k] << "_us_per_step\": " << p.engineUs[k];
+            o << ", \"" << p.methods[k] << "_us_per_step\": " << p.engineUs[k] << ", \""
+              << p.methods[k] << "_tags\": " << p.engineTags[k];
         o << "}";
     }
     o << "],\n  \"targets\": [";

@@ -11,7 +11,7 @@ namespace rfir::sim::detail
 {
 rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
                                                   const mrpt::poses::CPose2D& robot,
-                                                  rfir::models::TRandom& rng)
+                                                  rfir::sim::TSimRandom& rng)
 {
     auto o = rfir::obs::CObservationRFIDReaders::Create();
     o->sensorLabel = "RFID";
@@ -51,7 +51,7 @@ double modelVoltage(const TIRConfig& ir, double d, double h)
 
 rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
                                               const mrpt::poses::CPose2D& robot,
-                                              rfir::models::TRandom& rng)
+                                              rfir::sim::TSimRandom& rng)
 {
     const auto& ir = cfg.ir;
     auto o = rfir::obs::CObservationIRSignals::Create();
@@ -121,7 +121,7 @@ float floatBearing(double b)
 
 mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
                                                  const mrpt::poses::CPose2D& robot,
-                                                 rfir::models::TRandom& rng)
+                                                 rfir::sim::TSimRandom& rng)
 {
     const auto& sp = cfg.rbSensor;
     auto o = mrpt::obs::CObservationBearingRange::Create();

@@ -45,16 +45,4 @@ void OdometryGaussian::factor() {
     std::copy(L, L + 6, m_L);
 }
 
-void OdometryGaussian::propagate(TRandom& rng, double& x, double& y, double& phi) const {
-    double ix, iy, iphi;
-    draw(rng, ix, iy, iphi);
-    const double c = std::cos(phi), s = std::sin(phi);
-    x += c * ix - s * iy;
-    y += s * ix + c * iy;
-    phi += iphi;
-    // CPose2D::normalizePhi: wrap into (-pi, pi].
-    if (phi > M_PI || phi <= -M_PI) phi = std::remainder(phi, 2 * M_PI);
-    if (phi <= -M_PI) phi += 2 * M_PI;
-}
-
 }  // namespace rfir::models

@@ -105,10 +105,11 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
         drawMotion(*g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; },
                    *m_rng);
     m_ess = -1;
-    if (afterMotion) afterMotion();
-    if (!logLikelihood) return;
+    if (!m_model) return;
+    m_model->afterMotion();
+    if (!m_model->weighs()) return;
     for (size_t i = 0; i < m_particles.size(); i++) {
-        const double ll = logLikelihood(i, m_particles[i].d);
+        const double ll = m_model->logLikelihood(i, m_particles[i].d);
         if (!std::isfinite(ll))
             throw std::runtime_error(
                 "the landmark map returned a non-finite log-likelihood");

@@ -50,7 +50,23 @@ class OdometryGaussian {
     }
     /** Moves pose (x, y, phi) by one draw: pose (+) draw, heading wrapped to
      * (-pi, pi] as CPose2D's composition does. */
-    void propagate(TRandom& rng, double& x, double& y, double& phi) const;
+    void propagate(TRandom& rng, double& x, double& y, double& phi) const {
+        propagate(rng, x, y, phi, std::cos(phi), std::sin(phi));
+    }
+    /** The same, given c, s = cos(phi), sin(phi). */
+    void propagate(TRandom& rng, double& x, double& y, double& phi, double c,
+                   double s) const {
+        double ix, iy, iphi;
+        draw(rng, ix, iy, iphi);
+        x += c * ix - s * iy;
+        y += s * ix + c * iy;
+        phi += iphi;
+        // CPose2D's composition wraps into (-pi, pi].
+        if (phi > M_PI || phi <= -M_PI) {
+            phi = std::remainder(phi, 2 * M_PI);
+            if (phi <= -M_PI) phi += 2 * M_PI;
+        }
+    }
 
     const double* covariance() const { return m_C; }  //!< row-major 3x3
     const double* mean() const { return m_mean; }

@@ -60,8 +60,10 @@ void drawMotion(const rfir::models::OdometryGaussian& g, Particles& particles,
                 PoseOf&& poseOf, rfir::models::TRandom& rng) {
     for (auto& p : particles) {
         mrpt::poses::CPose2D& pose = poseOf(p);
+        // The heading's cos and sin are the pose's cached ones (computed once
+        // after the last move, by the weighing): one sincos per particle.
         double x = pose.x(), y = pose.y(), phi = pose.phi();
-        g.propagate(rng, x, y, phi);
+        g.propagate(rng, x, y, phi, pose.phi_cos(), pose.phi_sin());
         pose.x(x);
         pose.y(y);
         pose.phi(phi);

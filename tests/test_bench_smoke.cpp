@@ -44,7 +44,6 @@ size_t count(const std::string& s, const std::string& what) {
     return n;
 }
 
-
 long fileSize(const std::string& p) {
     struct stat st;
     return ::stat(p.c_str(), &st) == 0 ? long(st.st_size) : -1;
@@ -61,7 +60,8 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
     ASSERT_EQ(r.status, 0) << r.err;
     // Table: the floor, both sweeps, the whole runs, the plain reference side
     // by side and seven targets.
-    EXPECT_NE(r.out.find("floor (1 fast Gaussian motion draw"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("floor (1 fast Gaussian motion draw"), std::string::npos)
+        << r.out;
     EXPECT_NE(r.out.find("per step against the plain reference"), std::string::npos);
     EXPECT_NE(r.out.find("time and memory against M"), std::string::npos);
     EXPECT_NE(r.out.find("time and memory against N"), std::string::npos);
@@ -87,8 +87,7 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
     // The plain reference maps every tag read, as the engines do.
     const auto num = [&](const std::string& key) {
         const size_t at = js.find("\"" + key + "\": ");
-        return at == std::string::npos ? -1L
-                                        : std::stol(js.substr(at + key.size() + 4));
+        return at == std::string::npos ? -1L : std::stol(js.substr(at + key.size() + 4));
     };
     EXPECT_GT(num("plain_tags"), 0);
     EXPECT_EQ(num("plain_tags"), num("ps_tags"));

@@ -58,8 +58,8 @@ std::vector<TPlainCompare> runPlainCompare(const TBenchOptions& o) {
     std::vector<TPlainCompare> out;
     for (size_t M : o.compareM) {
         TPlainCompare p;
-        p.log = "sim_rfid_300mm_4tags_random.ini, " + std::to_string(int(o.compareSeconds)) +
-                " s";
+        p.log = "sim_rfid_300mm_4tags_random.ini, " +
+                std::to_string(int(o.compareSeconds)) + " s";
         p.M = M;
         p.steps = l.inputs.size();
         double best = 1e300;

@@ -57,11 +57,11 @@ void systematic(const double* lw, size_t n, rfir::models::TRandom& rng,
 
 /** One tag's fixed-lag smoother, flat: J states, J x lag ring of history. */
 struct TTag {
-    std::vector<double> px, py;      //!< current states
-    std::vector<double> hx, hy;      //!< ring rows, J x lag
-    size_t head = 0, count = 0;      //!< next slot, stored states
-    double mx = 0, my = 0;           //!< estimate (mean of the smoothed set)
-    double startX = 0, startY = 0;   //!< estimate when the current visit began
+    std::vector<double> px, py;     //!< current states
+    std::vector<double> hx, hy;     //!< ring rows, J x lag
+    size_t head = 0, count = 0;     //!< next slot, stored states
+    double mx = 0, my = 0;          //!< estimate (mean of the smoothed set)
+    double startX = 0, startY = 0;  //!< estimate when the current visit began
     uint64_t visits = 0, lastStep = 0;
     double lastTravel = 0;
 };
@@ -156,8 +156,8 @@ void CPlainPsSlam::TImpl::weigh() {
         if (g.isNew) continue;
         const TTag& t = tags[g.tag];
         const bool newVisit =
-            t.visits == 0 || (steps - t.lastStep >= 1 &&
-                              travel - t.lastTravel >= o.revisitMinTravel);
+            t.visits == 0 ||
+            (steps - t.lastStep >= 1 && travel - t.lastTravel >= o.revisitMinTravel);
         if (!newVisit && t.visits < 2) continue;
         for (const auto& a : g.areas) {
             used.push_back(a);
@@ -195,7 +195,8 @@ void CPlainPsSlam::TImpl::resampleRobot() {
     txh.assign(x.begin(), x.end()), tyh.assign(y.begin(), y.end());
     std::vector<double>& ph = scratchPhi;
     ph.assign(phi.begin(), phi.end());
-    for (size_t k = 0; k < M; k++) x[k] = txh[idx[k]], y[k] = tyh[idx[k]], phi[k] = ph[idx[k]];
+    for (size_t k = 0; k < M; k++)
+        x[k] = txh[idx[k]], y[k] = tyh[idx[k]], phi[k] = ph[idx[k]];
     std::fill(lw.begin(), lw.end(), 0.0);
 }
 

@@ -11,12 +11,12 @@
 namespace rfir::bench {
 /** The stock slam_ps.ini settings the reference hard-codes. */
 struct TPlainOptions {
-    size_t M = 500;                  //!< robot particles
-    size_t J = 100, lag = 25;        //!< per-tag smoother: particles, stored states
-    double resampleEss = 0.5;        //!< robot resampling below ESS / M
-    double stepSigma = 0.001;        //!< smoother random step (m)
-    double beta = 1.618;             //!< step model tail gain
-    double revisitMinTravel = 1.0;   //!< m between visits (revisit_all)
+    size_t M = 500;                 //!< robot particles
+    size_t J = 100, lag = 25;       //!< per-tag smoother: particles, stored states
+    double resampleEss = 0.5;       //!< robot resampling below ESS / M
+    double stepSigma = 0.001;       //!< smoother random step (m)
+    double beta = 1.618;            //!< step model tail gain
+    double revisitMinTravel = 1.0;  //!< m between visits (revisit_all)
     rfir::models::OdometryNoiseParams motion;
     uint64_t seed = 1;
 };

@@ -5,7 +5,6 @@
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_inputs.h>
 
-
 #include <chrono>
 #include <string>
 

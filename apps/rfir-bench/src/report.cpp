@@ -180,8 +180,9 @@ std::string toJson(const TBenchReport& r) {
     o << "],\n  \"plain_reference\": [";
     for (size_t i = 0; i < r.plain.size(); i++) {
         const auto& p = r.plain[i];
-        o << (i ? ", " : "") << "{\"log\": \"" << jsonEscape(p.log) << "\", \"M\": " << p.M
-          << ", \"steps\": " << p.steps << ", \"plain_us_per_step\": " << p.plainUs
+        o << (i ? ", " : "") << "{\"log\": \"" << jsonEscape(p.log)
+          << "\", \"M\": " << p.M << ", \"steps\": " << p.steps
+          << ", \"plain_us_per_step\": " << p.plainUs
           << ", \"plain_tags\": " << p.plainTags;
         for (size_t k = 0; k < p.methods.size(); k++)
             o << ", \"" << p.methods[k] << "_us_per_step\": " << p.engineUs[k] << ", \""

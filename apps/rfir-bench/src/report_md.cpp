@@ -37,7 +37,8 @@ namespace {
 void plainRows(std::ostream& o, const TBenchReport& r) {
     if (r.plain.empty()) return;
     o << "\n**Per step against the plain reference** (`plain_reference.cpp`; thread CPU "
-         "of the whole run / steps, same inputs)\n\n| log | M | steps | plain us | method "
+         "of the whole run / steps, same inputs)\n\n| log | M | steps | plain us | "
+         "method "
          "| us | x plain |\n| --- | ---: | ---: | ---: | --- | ---: | ---: |\n";
     for (const auto& p : r.plain)
         for (size_t k = 0; k < p.methods.size(); k++)
@@ -74,10 +75,10 @@ std::string toMarkdown(const TBenchReport& r) {
          "SLAM CPU s | SLAM wall s | x real time | plain reference CPU s |\n| --- | "
          "---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const auto& x : r.realtime)
-        o << "| " << methodLabel(x.method) << " | " << x.M << " | " << num(x.simSeconds, 0)
-          << " | " << x.steps << " | " << x.tagsInWorld << " | " << x.tagsMapped << " | "
-          << x.detections << " | " << num(x.slamSeconds, 2) << " | "
-          << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " | "
+        o << "| " << methodLabel(x.method) << " | " << x.M << " | "
+          << num(x.simSeconds, 0) << " | " << x.steps << " | " << x.tagsInWorld << " | "
+          << x.tagsMapped << " | " << x.detections << " | " << num(x.slamSeconds, 2)
+          << " | " << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " | "
           << (x.plainSeconds > 0 ? num(x.plainSeconds, 2) : std::string("-")) << " |\n";
     plainRows(o, r);
     o << "\n**Targets**\n\n| target | result | numbers |\n| --- | --- | --- |\n";

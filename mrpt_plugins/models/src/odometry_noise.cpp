@@ -13,9 +13,15 @@ OdometryGaussian OdometryGaussian::fromOdometry(double dx, double dy, double dph
     // heading column); C = J diag(vxy, vxy, vphi) J^T.
     const double c = std::cos(0.5 * dphi), s = std::sin(0.5 * dphi);
     const double j02 = -s * dx - c * dy, j12 = c * dx - s * dy;
-    const double C[9] = {vxy + j02 * j02 * vphi, j02 * j12 * vphi, j02 * vphi,
-                         j02 * j12 * vphi,       vxy + j12 * j12 * vphi, j12 * vphi,
-                         j02 * vphi,             j12 * vphi,             vphi};
+    const double C[9] = {vxy + j02 * j02 * vphi,
+                         j02 * j12 * vphi,
+                         j02 * vphi,
+                         j02 * j12 * vphi,
+                         vxy + j12 * j12 * vphi,
+                         j12 * vphi,
+                         j02 * vphi,
+                         j12 * vphi,
+                         vphi};
     return fromCovariance(dx, dy, dphi, C);
 }
 

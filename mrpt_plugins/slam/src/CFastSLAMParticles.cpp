@@ -82,8 +82,9 @@ void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     if (const auto g = motionOf(action))
-        drawMotion(*g, m_particles,
-                   [](auto& p) -> mrpt::poses::CPose2D& { return p.d.pose; }, *rng_);
+        drawMotion(
+            *g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d.pose; },
+            *rng_);
     if (!detections_ || detections_->empty()) return;
     std::vector<size_t> idx;
     for (const auto& d : *detections_) idx.push_back(indexOf(d));

@@ -102,8 +102,9 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     // Motion model (SPEC section 3): one draw of the odometry increment's
     // Gaussian per particle.
     if (const auto g = motionOf(action))
-        drawMotion(*g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; },
-                   *m_rng);
+        drawMotion(
+            *g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; },
+            *m_rng);
     m_ess = -1;
     if (!m_model) return;
     m_model->afterMotion();

@@ -1,8 +1,8 @@
 /* rfir: Gauss-Newton (Levenberg-Marquardt damped) smoothing of a SLAM run over
  * odometry and RFID read factors; see graph_smoother.h. */
 #include <rfir/models/detection_likelihood.h>
-#include <rfir/slam/detections.h>
 #include <rfir/models/odometry_noise.h>
+#include <rfir/slam/detections.h>
 #include <rfir/slam/graph_smoother.h>
 
 #include <mrpt/math/wrap2pi.h>

@@ -51,8 +51,8 @@ std::optional<rfir::models::OdometryGaussian> motionOf(
     if (!mv) return std::nullopt;
     const auto& u = mv->rawOdometryIncrementReading;
     const auto& m = mv->motionModelConfiguration.gaussianModel;
-    const rfir::models::OdometryNoiseParams p{m.a1, m.a2, m.a3, m.a4, m.minStdXY,
-                                              m.minStdPHI};
+    const rfir::models::OdometryNoiseParams p{m.a1, m.a2,       m.a3,
+                                              m.a4, m.minStdXY, m.minStdPHI};
     return rfir::models::OdometryGaussian::fromOdometry(u.x(), u.y(), u.phi(), p);
 }
 

@@ -16,7 +16,8 @@ PF::TParticleFilterOptions withoutMrptResampling(PF::TParticleFilterOptions o) {
 namespace {
 /** Residual resampling: floor(n w_i) copies of each, the rest multinomial
  * on the residual weights. */
-std::vector<size_t> residual(const std::vector<double>& logW, rfir::models::TRandom& rng) {
+std::vector<size_t> residual(const std::vector<double>& logW,
+                             rfir::models::TRandom& rng) {
     const size_t n = logW.size();
     const double mx = *std::max_element(logW.begin(), logW.end());
     std::vector<double> w(n);

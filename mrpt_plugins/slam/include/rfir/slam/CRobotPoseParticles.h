@@ -41,7 +41,8 @@ class CRobotPoseParticles
         /** Whether this step's observation weighs the robot. */
         virtual bool weighs() const = 0;
         /** Log-likelihood of particle i at its moved pose. */
-        virtual double logLikelihood(size_t i, const mrpt::poses::CPose2D& pose) const = 0;
+        virtual double logLikelihood(size_t i,
+                                     const mrpt::poses::CPose2D& pose) const = 0;
     };
     void setStepModel(IStepModel* m) { m_model = m; }
 

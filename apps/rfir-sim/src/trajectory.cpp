@@ -39,7 +39,7 @@ double wrapToPi(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
 std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, double y0,
                                         double x1, double y1,
-                                        rfir::models::TRandom& rng)
+                                        rfir::sim::TSimRandom& rng)
 {
     std::vector<TPoseU> w;
     if (t.kind == TTrajectoryConfig::Kind::Random)
@@ -65,7 +65,7 @@ std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, d
     return w;
 }
 
-CPlan::CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng)
+CPlan::CPlan(const TSimConfig& cfg, rfir::sim::TSimRandom& rng)
 {
     const auto& tc = cfg.trajectory;
     const double m = tc.margin;

@@ -58,13 +58,16 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
                 "/b.json --plots " + dir,
             dir);
     ASSERT_EQ(r.status, 0) << r.err;
-    // Table: the floor, both sweeps, the whole runs and eight targets.
-    EXPECT_NE(r.out.find("floor (motion noise draw"), std::string::npos) << r.out;
+    // Table: the floor, both sweeps, the whole runs, the plain reference side
+    // by side and nine targets.
+    EXPECT_NE(r.out.find("floor (1 fast Gaussian motion draw"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("per step against the plain reference"), std::string::npos);
     EXPECT_NE(r.out.find("time and memory against M"), std::string::npos);
     EXPECT_NE(r.out.find("time and memory against N"), std::string::npos);
     EXPECT_NE(r.out.find("whole offline runs"), std::string::npos);
     EXPECT_EQ(count(r.out, "PASS  ") + count(r.out, "FAIL  ") + count(r.out, "n/a   "),
-              8u)
+              9u)
         << r.out;
     // One row per method in the sweep over M (1 value) and over N (2 values),
     // plus the whole runs (M = 100 and 500).
@@ -79,7 +82,16 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
     EXPECT_EQ(count(js, "\"skipped\": false"), 9u);
     EXPECT_EQ(count(js, "\"median_us\": "), 9u + 2u);  // cases + floor at M = 100, 500
     EXPECT_EQ(count(js, "\"state_bytes\": "), 9u);
-    EXPECT_EQ(count(js, "\"result\": "), 8u);
+    EXPECT_EQ(count(js, "\"result\": "), 9u);
+    EXPECT_EQ(count(js, "\"plain_us_per_step\": "), 1u);
+    // The plain reference maps every tag read, as the engines do.
+    const auto num = [&](const std::string& key) {
+        const size_t at = js.find("\"" + key + "\": ");
+        return at == std::string::npos ? -1L : std::stol(js.substr(at + key.size() + 4));
+    };
+    EXPECT_GT(num("plain_tags"), 0);
+    EXPECT_EQ(num("plain_tags"), num("ps_tags"));
+    EXPECT_EQ(num("plain_tags"), num("pf_tags"));
     EXPECT_EQ(count(js, "\"x_realtime\": "), 6u);
     // Every case mapped the tags it was built with (N, or N = 10 / 100).
     EXPECT_EQ(count(js, "\"landmarks\": 10}"), 3u) << js;

@@ -1,5 +1,6 @@
 // Per-tag particle filter and fixed-lag smoother: mechanics and accuracy on
 // reads simulated from known robot poses.
+#include <rfir/models/random.h>
 #include <rfir/models/tag_fixed_lag_smoother.h>
 #include <rfir/models/tag_particle_filter.h>
 
@@ -13,7 +14,7 @@ using mrpt::math::TPoint2D;
 using mrpt::math::TPose2D;
 
 TEST(TagParticleFilter, InitUniformOverPlacedReader) {
-    mrpt::random::CRandomGenerator rng(1);
+    rfir::models::TRandom rng(1);
     TagParticleFilter pf;
     pf.initUniform({2.0, 1.0, M_PI / 2}, {0.1, 0.0, 0.03, 0.15}, rng);
     ASSERT_EQ(pf.particles().size(), 100u);
@@ -30,7 +31,7 @@ TEST(TagParticleFilter, InitUniformOverPlacedReader) {
 }
 
 TEST(TagParticleFilter, UpdateWeighsEstimatesAndResamples) {
-    mrpt::random::CRandomGenerator rng(2);
+    rfir::models::TRandom rng(2);
     TagParticleFilter pf;
     pf.initFromPoints({{0, 0}, {1, 0}, {2, 0}, {3, 0}});
     // Likelihood 1 for x < 1.5, 0 beyond: the mean is taken with the weights
@@ -43,7 +44,7 @@ TEST(TagParticleFilter, UpdateWeighsEstimatesAndResamples) {
 }
 
 TEST(TagFixedLagSmoother, HistoriesTravelWithParticlesAndLagCaps) {
-    mrpt::random::CRandomGenerator rng(3);
+    rfir::models::TRandom rng(3);
     TagFixedLagSmootherParams p;
     p.lag = 3;
     p.stepSigma = 0.0;  // no random step: states are exact
@@ -96,7 +97,7 @@ namespace {
 struct ReadSim {
     double half;
     double poseNoise;
-    mrpt::random::CRandomGenerator rng;
+    rfir::models::TRandom rng;
     ReadSim(double h, double noise, uint32_t seed)
         : half(h), poseNoise(noise), rng(seed) {}
     std::pair<TPose2D, ReaderArea> read(const TPoint2D& truth) {
@@ -120,7 +121,7 @@ template <class EST>
 double meanError(EST proto, double half, double noise, int reads, int tags,
                  uint32_t seed) {
     ReadSim sim(half, noise, seed);
-    mrpt::random::CRandomGenerator rng(seed + 1);
+    rfir::models::TRandom rng(seed + 1);
     const DetectionLikelihood det;
     double sum = 0;
     for (int t = 0; t < tags; t++) {
@@ -170,7 +171,7 @@ TEST(TagEstimators, SmootherVersusFilterOnLargeReaders) {
 
 TEST(TagEstimators, SameSeedSameResult) {
     auto run = [] {
-        mrpt::random::CRandomGenerator rng(42);
+        rfir::models::TRandom rng(42);
         TagFixedLagSmoother ps;
         ps.initUniform({0, 0, 0.3}, {0.1, 0.1, 0.15, 0.15}, rng);
         for (int k = 0; k < 10; k++)

@@ -1,4 +1,5 @@
 // Likelihood values computed by hand, resampling and INI key checks.
+#include <rfir/models/random.h>
 #include <rfir/models/detection_likelihood.h>
 #include <rfir/models/ini_reader.h>
 #include <rfir/models/range_bearing.h>
@@ -74,7 +75,7 @@ TEST(RangeBearing, LikelihoodAndInverse) {
     predictRangeBearing({1, 1, M_PI / 2}, q, r, br);
     EXPECT_NEAR(r, 2.0, 1e-12);
     EXPECT_NEAR(br, M_PI / 2, 1e-12);
-    mrpt::random::CRandomGenerator rng(3);
+    rfir::models::TRandom rng(3);
     const auto pts = sampleRangeBearingInverse(s, 0.4, 0.0, p, 4000, rng);
     double mx = 0, vy = 0;
     for (const auto& pt : pts) mx += pt.x / pts.size();
@@ -84,7 +85,7 @@ TEST(RangeBearing, LikelihoodAndInverse) {
 }
 
 TEST(Resampling, SystematicIsExactAndSeeded) {
-    mrpt::random::CRandomGenerator rng(7);
+    rfir::models::TRandom rng(7);
     const std::vector<double> lw = {0.0, std::log(3.0)};
     const auto idx = resampleIndices(lw, 4, ResamplingScheme::Systematic, rng);
     EXPECT_EQ(idx, (std::vector<size_t>{0, 1, 1, 1}));
@@ -93,11 +94,11 @@ TEST(Resampling, SystematicIsExactAndSeeded) {
     for (auto s : {ResamplingScheme::Systematic, ResamplingScheme::Stratified,
                    ResamplingScheme::Multinomial}) {
         for (size_t i : resampleIndices(lw2, 10, s, rng)) EXPECT_EQ(i, 1u);
-        mrpt::random::CRandomGenerator a(11), b(11);
+        rfir::models::TRandom a(11), b(11);
         const std::vector<double> w = {0.1, 0.5, -0.3, 0.0, 1.0};
         EXPECT_EQ(resampleIndices(w, 50, s, a), resampleIndices(w, 50, s, b));
     }
-    mrpt::random::CRandomGenerator m(5);
+    rfir::models::TRandom m(5);
     const auto many = resampleIndices(lw, 20000, ResamplingScheme::Multinomial, m);
     const double frac0 = std::count(many.begin(), many.end(), 0u) / 20000.0;
     EXPECT_NEAR(frac0, 0.25, 0.015);

@@ -1,5 +1,6 @@
 /* rfir_slam: parts checked alone (copy-on-write trie, EKF by hand, FastSLAM
  * copy counting, INI rejection, sensor resetting geometry). */
+#include <rfir/models/random.h>
 #include <rfir/slam/CFastSLAMParticles.h>
 #include <rfir/slam/kidnap.h>
 #include <rfir/slam/persistent_vector.h>
@@ -68,9 +69,10 @@ TEST(SlamEKF, RangeBearingInverseMatchesPrediction) {
 }
 
 TEST(SlamFastSLAM, ResamplingSharesLandmarks) {
-    mrpt::random::getRandomGenerator().randomize(3);
+    mrpt::random::getRandomGenerator().randomize(3);  // MRPT's own resampling here
+    rfir::models::TRandom rng(3);
     CFastSLAMParticles pf;
-    pf.reset(mrpt::poses::CPose2D(), 200, 0.01, 0.01);
+    pf.reset(mrpt::poses::CPose2D(), 200, 0.01, 0.01, rng);
     std::vector<TDetection> dets;
     for (int k = 0; k < 50; k++) {
         TDetection d;
@@ -156,7 +158,7 @@ TEST(SlamConfig, BadSettingsNameTheKey) {
 }
 
 TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
-    mrpt::random::CRandomGenerator rng(5);
+    rfir::models::TRandom rng(5);
     TAnchor a;
     a.det.id = "T";
     a.det.a = 0.2;

@@ -29,6 +29,10 @@ struct TBenchOptions {
     std::vector<std::string> slamSets, simSets, sets;
     bool quick = false;
     bool realtime = true;  //!< run the whole offline runs
+    /** Side by side with the plain reference: a simulated 300 mm random-path
+     * log of this length, at these M. */
+    double compareSeconds = 300;
+    std::vector<size_t> compareM{500, 5000};
 };
 
 /** Heap bytes in use (glibc mallinfo2: uordblks + hblkhd, all arenas). */
@@ -57,7 +61,8 @@ struct TCaseResult {
     size_t tagsMapped = 0;    //!< landmarks the engine reports
 };
 
-/** The floor at one M: motion noise draw + one detection likelihood per particle. */
+/** The floor at one M: one fast Gaussian motion draw, one pose composition
+ * and one detection likelihood per particle, plain loops (floor_loop.cpp). */
 struct TFloorResult {
     size_t M = 0;
     double medianUs = 0, meanUs = 0;  //!< thread CPU time
@@ -75,6 +80,19 @@ struct TRealtimeResult {
     double slamSeconds = 0;      //!< every engine step, end to end (thread CPU time)
     double slamWallSeconds = 0;  //!< the same on the wall clock
     double speedup = 0;          //!< simSeconds / slamSeconds
+    double plainSeconds = 0;     //!< the plain reference on the same run (ps rows)
+};
+
+/** Per step (thread CPU time of the whole run / steps), engines and the
+ * plain reference (plain_reference.cpp) on the same simulated log. */
+struct TPlainCompare {
+    std::string log;
+    size_t M = 0, steps = 0;
+    double plainUs = 0;
+    size_t plainTags = 0;
+    std::vector<std::string> methods;
+    std::vector<double> engineUs;
+    std::vector<size_t> engineTags;
 };
 
 /** A pass/fail target with the numbers that decide it. */
@@ -92,6 +110,7 @@ struct TBenchReport {
     std::vector<TFloorResult> floor;
     std::vector<TCaseResult> sweepM, sweepN;
     std::vector<TRealtimeResult> realtime;
+    std::vector<TPlainCompare> plain;
     std::vector<TTarget> targets;
 };
 
@@ -109,12 +128,20 @@ TFloorResult runFloor(const TBenchOptions& o, size_t M);
 std::vector<TRealtimeResult> runRealtime(
     const TBenchOptions& o, const std::vector<std::pair<std::string, size_t>>& runs);
 
+/** The engines and the plain reference side by side (runPlainCompare). */
+std::vector<TPlainCompare> runPlainCompare(const TBenchOptions& o);
+/** Thread CPU seconds of the plain reference over a run (ps settings at M). */
+double plainSeconds(const TBenchOptions& o, const std::vector<rfir::slam::TSlamInput>& in,
+                    const mrpt::poses::CPose2D& start, size_t M, size_t& mapped);
+
 /** Fills the ratios (to the floor, to PS-SLAM) and the targets. */
 void evaluate(TBenchReport& r);
 
 /** "PS-SLAM", "PF-SLAM", "FastSLAM" for ps, pf, fastslam. */
 const char* methodLabel(const std::string& method);
 void printTable(const TBenchReport& r, std::ostream& out);
+/** The side-by-side rows of printTable. */
+void printPlain(const TBenchReport& r, std::ostream& out);
 std::string toJson(const TBenchReport& r);
 /** The results as Markdown tables (for docs/benchmark.md). */
 std::string toMarkdown(const TBenchReport& r);

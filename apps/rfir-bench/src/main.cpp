@@ -114,6 +114,8 @@ void runAll(TBenchReport& r, bool quiet) {
     for (const auto& m : o.methods) runs.push_back({m, 100});
     for (const auto& m : o.methods) runs.push_back({m, 500});
     r.realtime = runRealtime(o, runs);
+    progress("side by side with the plain reference");
+    r.plain = runPlainCompare(o);
 }
 
 /** The --set edits into o (by section), checked by loading every INI the
@@ -150,6 +152,8 @@ void setQuick(TBenchOptions& o) {
     o.warmupUpdates = 4;
     o.realtimeSeconds = 60;
     o.rounds = 1;
+    o.compareSeconds = 30;
+    o.compareM = {500};
 }
 
 struct TOutputs {

@@ -5,8 +5,6 @@
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_inputs.h>
 
-#include <mrpt/random/RandomGenerators.h>
-
 #include <chrono>
 #include <string>
 
@@ -52,7 +50,6 @@ std::vector<TRealtimeResult> runRealtime(
         r.steps = inputs.size();
         r.simSeconds = inputs.empty() ? 0 : inputs.back().t - inputs.front().t;
         r.tagsInWorld = tags;
-        mrpt::random::getRandomGenerator().randomize(uint32_t(o.seed));
         const auto cfg = benchConfig(o, method, M);
         auto engine = rfir::slam::makeEngine(cfg, sim.header);
         const double w0 = wallSeconds(), c0 = threadCpuSeconds();
@@ -61,6 +58,8 @@ std::vector<TRealtimeResult> runRealtime(
         r.slamWallSeconds = wallSeconds() - w0;
         r.tagsMapped = run.map.size();
         r.speedup = r.slamSeconds > 0 ? r.simSeconds / r.slamSeconds : 0;
+        size_t plainTags = 0;
+        if (method == "ps") r.plainSeconds = plainSeconds(o, inputs, start, M, plainTags);
         out.push_back(r);
     }
     return out;

@@ -89,7 +89,8 @@ void printTable(const TBenchReport& r, std::ostream& out) {
         << r.options.rounds << " rounds)"
         << " (2 known tags read per update; wall_us = wall-clock median); memory = heap "
         << "bytes in use by the state (glibc mallinfo2)\n\n";
-    out << "floor (motion noise draw + 1 detection likelihood per particle)\n"
+    out << "floor (1 fast Gaussian motion draw + 1 pose composition + 1 detection "
+           "likelihood per particle, plain loops)\n"
         << row("%6s %10s %10s %10s\n", "M", "median_us", "mean_us", "wall_us");
     for (const auto& f : r.floor)
         out << row("%6zu %10.2f %10.2f %10.2f\n", f.M, f.medianUs, f.meanUs,
@@ -106,15 +107,36 @@ void printTable(const TBenchReport& r, std::ostream& out) {
     out << "whole offline runs\n"
         << row("%-9s %6s %9s %7s %7s %7s %9s %10s %10s %10s\n", "method", "M", "robot_s",
                "steps", "tags", "mapped", "reads", "slam_s", "wall_s", "x_realtime");
-    for (const auto& x : r.realtime)
-        out << row("%-9s %6zu %9.0f %7zu %7zu %7zu %9zu %10.3f %10.3f %10.0f\n",
+    for (const auto& x : r.realtime) {
+        out << row("%-9s %6zu %9.0f %7zu %7zu %7zu %9zu %10.3f %10.3f %10.0f",
                    methodLabel(x.method), x.M, x.simSeconds, x.steps, x.tagsInWorld,
                    x.tagsMapped, x.detections, x.slamSeconds, x.slamWallSeconds,
                    x.speedup);
+        if (x.plainSeconds > 0)
+            out << row("   plain reference %.3f s (x %.2f)", x.plainSeconds,
+                       x.slamSeconds / x.plainSeconds);
+        out << "\n";
+    }
+    printPlain(r, out);
     out << "\ntargets\n";
     for (const auto& t : r.targets)
         out << (t.measured ? (t.pass ? "  PASS  " : "  FAIL  ") : "  n/a   ") << t.name
             << ": " << t.detail << "\n";
+}
+
+void printPlain(const TBenchReport& r, std::ostream& out) {
+    if (r.plain.empty()) return;
+    out << "\nper step against the plain reference (thread CPU of the whole run / "
+           "steps)\n";
+    for (const auto& p : r.plain) {
+        out << row("  %s, M = %zu, %zu steps: plain %.1f us (%zu tags)", p.log.c_str(),
+                   p.M, p.steps, p.plainUs, p.plainTags);
+        for (size_t k = 0; k < p.methods.size(); k++)
+            out << row("; %s %.1f us (x %.2f, %zu tags)", p.methods[k].c_str(),
+                       p.engineUs[k], p.plainUs > 0 ? p.engineUs[k] / p.plainUs : 0,
+                       p.engineTags[k]);
+        out << "\n";
+    }
 }
 
 std::string toJson(const TBenchReport& r) {
@@ -155,7 +177,20 @@ std::string toJson(const TBenchReport& r) {
           << ", \"tags_mapped\": " << x.tagsMapped << ", \"reads\": " << x.detections
           << ", \"slam_seconds\": " << x.slamSeconds
           << ", \"slam_wall_seconds\": " << x.slamWallSeconds
-          << ", \"x_realtime\": " << x.speedup << "}";
+          << ", \"x_realtime\": " << x.speedup
+          << ", \"plain_reference_s\": " << x.plainSeconds << "}";
+    }
+    o << "],\n  \"plain_reference\": [";
+    for (size_t i = 0; i < r.plain.size(); i++) {
+        const auto& p = r.plain[i];
+        o << (i ? ", " : "") << "{\"log\": \"" << jsonEscape(p.log)
+          << "\", \"M\": " << p.M << ", \"steps\": " << p.steps
+          << ", \"plain_us_per_step\": " << p.plainUs
+          << ", \"plain_tags\": " << p.plainTags;
+        for (size_t k = 0; k < p.methods.size(); k++)
+            o << ", \"" << p.methods[k] << "_us_per_step\": " << p.engineUs[k] << ", \""
+              << p.methods[k] << "_tags\": " << p.engineTags[k];
+        o << "}";
     }
     o << "],\n  \"targets\": [";
     for (size_t i = 0; i < r.targets.size(); i++) {

@@ -33,6 +33,22 @@ void cases(std::ostringstream& o, const std::vector<TCaseResult>& v) {
 }
 }  // namespace
 
+namespace {
+void plainRows(std::ostream& o, const TBenchReport& r) {
+    if (r.plain.empty()) return;
+    o << "\n**Per step against the plain reference** (`plain_reference.cpp`; thread CPU "
+         "of the whole run / steps, same inputs)\n\n| log | M | steps | plain us | "
+         "method "
+         "| us | x plain |\n| --- | ---: | ---: | ---: | --- | ---: | ---: |\n";
+    for (const auto& p : r.plain)
+        for (size_t k = 0; k < p.methods.size(); k++)
+            o << "| " << p.log << " | " << p.M << " | " << p.steps << " | "
+              << num(p.plainUs, 1) << " | " << methodLabel(p.methods[k]) << " | "
+              << num(p.engineUs[k], 1) << " | "
+              << num(p.plainUs > 0 ? p.engineUs[k] / p.plainUs : 0, 2) << " |\n";
+}
+}  // namespace
+
 std::string toMarkdown(const TBenchReport& r) {
     std::ostringstream o;
     o << "Measured on " << r.host
@@ -48,7 +64,8 @@ std::string toMarkdown(const TBenchReport& r) {
         o << ".";
     }
     o << "\n\n";
-    o << "**Floor** (motion noise draw + one detection likelihood per particle)\n\n"
+    o << "**Floor** (one fast Gaussian motion draw, one pose composition and one "
+         "detection likelihood per particle, plain loops)\n\n"
       << "| M | median us | mean us | wall us |\n| ---: | ---: | ---: | ---: |\n";
     for (const auto& f : r.floor)
         o << "| " << f.M << " | " << num(f.medianUs, 1) << " | " << num(f.meanUs, 1)
@@ -61,14 +78,15 @@ std::string toMarkdown(const TBenchReport& r) {
     cases(o, r.sweepN);
     o << "**Whole offline runs** (`config_ini/bench_floor_30x20.ini`)\n\n"
       << "| method | M | robot time s | steps | tags in world | tags mapped | reads | "
-         "SLAM CPU s | SLAM wall s | x real time |\n| --- | ---: | ---: | ---: | ---: | "
-         "---: | "
-         "---: | ---: | ---: | ---: |\n";
+         "SLAM CPU s | SLAM wall s | x real time | plain reference CPU s |\n| --- | "
+         "---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const auto& x : r.realtime)
         o << "| " << methodLabel(x.method) << " | " << x.M << " | "
           << num(x.simSeconds, 0) << " | " << x.steps << " | " << x.tagsInWorld << " | "
           << x.tagsMapped << " | " << x.detections << " | " << num(x.slamSeconds, 2)
-          << " | " << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " |\n";
+          << " | " << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " | "
+          << (x.plainSeconds > 0 ? num(x.plainSeconds, 2) : std::string("-")) << " |\n";
+    plainRows(o, r);
     o << "\n**Targets**\n\n| target | result | numbers |\n| --- | --- | --- |\n";
     for (const auto& t : r.targets)
         o << "| " << t.name << " | "

@@ -7,7 +7,6 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/vector_loadsave.h>
-#include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/filesystem.h>
 
 #include <algorithm>
@@ -91,7 +90,6 @@ TCaseResult runCase(const TBenchOptions& o, const std::string& method, size_t M,
         r.skipReason = "M*N above --max-fastslam-mn";
         return r;
     }
-    mrpt::random::getRandomGenerator().randomize(uint32_t(o.seed));
     const auto cfg = benchConfig(o, method, M);
     const CSyntheticDrive drive(N);
     const size_t base = heapInUse();

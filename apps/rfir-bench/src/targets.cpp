@@ -183,6 +183,27 @@ TTarget psFloor(const TBenchReport& r) {
     return t;
 }
 
+TTarget vsPlain(const TBenchReport& r) {
+    TTarget t;
+    t.name = "PS-SLAM and PF-SLAM per step within 1.5 x the plain reference (issue 11)";
+    std::string d;
+    bool any = false, pass = true;
+    for (const auto& p : r.plain)
+        for (size_t k = 0; k < p.methods.size(); k++) {
+            if (p.methods[k] == "fastslam" || !(p.plainUs > 0)) continue;
+            const double x = p.engineUs[k] / p.plainUs;
+            any = true;
+            pass = pass && x <= 1.5;
+            d += std::string(d.empty() ? "" : "; ") + methodLabel(p.methods[k]) +
+                 fmt(" M = %.0f: %.1f us = %.2f x plain (%.1f us)", double(p.M),
+                     p.engineUs[k], x, p.plainUs);
+        }
+    t.measured = any;
+    t.pass = any && pass;
+    t.detail = any ? d : "no side-by-side run";
+    return t;
+}
+
 TTarget realtime(const TBenchReport& r) {
     TTarget t;
     t.name = "20-minute 30 x 20 m run processed at least 500x faster than real time";
@@ -218,6 +239,7 @@ void evaluate(TBenchReport& r) {
                  tagBytes(r, "pf", "PF-SLAM", 2048),
                  psAbsolute(r),
                  psFloor(r),
+                 vsPlain(r),
                  realtime(r)};
 }
 

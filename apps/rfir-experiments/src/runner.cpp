@@ -118,8 +118,6 @@ TRunResult runMethod(const TSetup& setup, const TDataSet& data, const TMethodSpe
                      const TPoint& point, uint64_t seed, bool keepOutputs) {
     auto cfg = slamConfig(setup, m, point);
     cfg.seed = seed;
-    // MRPT's particle filter draws from the global generator.
-    mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
     auto engine = rfir::slam::makeEngine(cfg, data.sim.header);
     const auto run = rfir::slam::runEngine(*engine, data.sim.groundTruth.front().pose,
                                            rfir::slam::inputsFromSteps(data.sim.steps));

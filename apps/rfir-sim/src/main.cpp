@@ -35,9 +35,6 @@ int run(const std::string& ini, const std::vector<std::string>& sets,
         std::cerr << "error: " << dir << ": cannot create the output directory\n";
         return 1;
     }
-    // Nothing here uses MRPT's global generator; seeded anyway for any MRPT code
-    // that would.
-    mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
     if (!quiet)
         std::cerr << "rfir-sim: " << ini << " seed " << seed << ": simulating...\n";
     const auto out = rfir::sim::simulate(cfg, seed);

@@ -9,7 +9,7 @@
 
 namespace rfir::sim::detail {
 COdometrySimulator::COdometrySimulator(const TOdometryNoise& n,
-                                       rfir::models::TRandom& rng)
+                                       rfir::sim::TSimRandom& rng)
     : n_(n), rng_(rng) {
     s_ = rng_.drawGaussian1D(0, n_.scaleSigma);
     r_ = rng_.drawGaussian1D(0, n_.rotScaleSigma);

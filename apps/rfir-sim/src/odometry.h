@@ -5,14 +5,14 @@
 
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <rfir/models/random.h>
+#include "sim_random.h"
 
 namespace rfir::sim::detail {
 /** Corrupts true increments with the TOdometryNoise model: per-run biases are
  * drawn at construction, per-step Gaussian noise on each call. */
 class COdometrySimulator {
   public:
-    COdometrySimulator(const TOdometryNoise& n, rfir::models::TRandom& rng);
+    COdometrySimulator(const TOdometryNoise& n, rfir::sim::TSimRandom& rng);
     /** The increment (robot frame) the odometry reports for a true one. A zero
      * increment (robot standing or carried) stays exactly zero. */
     mrpt::poses::CPose2D noisyIncrement(const mrpt::poses::CPose2D& trueInc);
@@ -22,7 +22,7 @@ class COdometrySimulator {
 
   private:
     TOdometryNoise n_;
-    rfir::models::TRandom& rng_;
+    rfir::sim::TSimRandom& rng_;
     double s_ = 0, r_ = 0, h_ = 0;
 };
 }  // namespace rfir::sim::detail

@@ -12,7 +12,7 @@
 namespace rfir::sim::detail {
 rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
                                                   const mrpt::poses::CPose2D& robot,
-                                                  rfir::models::TRandom& rng) {
+                                                  rfir::sim::TSimRandom& rng) {
     auto o = rfir::obs::CObservationRFIDReaders::Create();
     o->sensorLabel = "RFID";
     double reach = 0;
@@ -53,7 +53,7 @@ double modelVoltage(const TIRConfig& ir, double d, double h) {
 
 rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
                                               const mrpt::poses::CPose2D& robot,
-                                              rfir::models::TRandom& rng) {
+                                              rfir::sim::TSimRandom& rng) {
     const auto& ir = cfg.ir;
     auto o = rfir::obs::CObservationIRSignals::Create();
     o->sensorLabel = "IR";
@@ -116,7 +116,7 @@ float floatBearing(double b) {
 
 mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
                                                  const mrpt::poses::CPose2D& robot,
-                                                 rfir::models::TRandom& rng) {
+                                                 rfir::sim::TSimRandom& rng) {
     const auto& sp = cfg.rbSensor;
     auto o = mrpt::obs::CObservationBearingRange::Create();
     o->sensorLabel = "RB";

@@ -118,7 +118,7 @@ void numberLandmarks(const TWorld& w, TSimOutput& out) {
 
 TSimOutput simulate(const TSimConfig& cfg, uint64_t seed) {
     cfg.validate();
-    rfir::models::TRandom rngPath(streamSeed(seed, 4)), rngOdo(streamSeed(seed, 5)),
+    rfir::sim::TSimRandom rngPath(streamSeed(seed, 4)), rngOdo(streamSeed(seed, 5)),
         rngRFID(streamSeed(seed, 6)), rngIR(streamSeed(seed, 7)),
         rngRB(streamSeed(seed, 8));
     const CPlan plan(cfg, rngPath);

@@ -45,7 +45,7 @@ double wrapToPi(double a) {
 
 std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, double y0,
                                         double x1, double y1,
-                                        rfir::models::TRandom& rng) {
+                                        rfir::sim::TSimRandom& rng) {
     std::vector<TPoseU> w;
     if (t.kind == TTrajectoryConfig::Kind::Random) {
         // Waypoints at least 0.3 m apart, so that no segment degenerates.
@@ -69,7 +69,7 @@ std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, d
     return w;
 }
 
-CPlan::CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng) {
+CPlan::CPlan(const TSimConfig& cfg, rfir::sim::TSimRandom& rng) {
     const auto& tc = cfg.trajectory;
     const double m = tc.margin;
     wps_ = trajectoryWaypoints(tc, cfg.areaMinX + m, cfg.areaMinY + m, cfg.areaMaxX - m,

@@ -5,7 +5,7 @@
 
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <rfir/models/random.h>
+#include "sim_random.h"
 
 #include <vector>
 
@@ -25,7 +25,7 @@ class CPlan {
   public:
     /** Builds the path of `cfg.trajectory` inside the area (random waypoints
      * drawn from `rng`). */
-    CPlan(const TSimConfig& cfg, rfir::models::TRandom& rng);
+    CPlan(const TSimConfig& cfg, rfir::sim::TSimRandom& rng);
     /** Pose at plan time t (clamped to [0, duration]). */
     mrpt::poses::CPose2D at(double t) const;
     double duration() const { return segs_.empty() ? 0 : segs_.back().t1; }
@@ -48,6 +48,6 @@ class CPlan {
 
 /** Waypoints (x, y) of a trajectory kind inside the rectangle [x0,x1]x[y0,y1]. */
 std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, double y0,
-                                        double x1, double y1, rfir::models::TRandom& rng);
+                                        double x1, double y1, rfir::sim::TSimRandom& rng);
 
 }  // namespace rfir::sim::detail

@@ -33,7 +33,7 @@ std::vector<double> gridLine(double lo, double len, double pitch) {
 }
 
 void buildTags(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
-    rfir::models::TRandom rng(streamSeed(seed, 1));
+    rfir::sim::TSimRandom rng(streamSeed(seed, 1));
     const double pitch = 1.0 / std::sqrt(cfg.rfid.density);
     const auto xs = gridLine(cfg.areaMinX, cfg.areaMaxX - cfg.areaMinX, pitch);
     const auto ys = gridLine(cfg.areaMinY, cfg.areaMaxY - cfg.areaMinY, pitch);
@@ -54,7 +54,7 @@ void buildTags(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
 }
 
 void buildEmitters(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
-    rfir::models::TRandom rng(streamSeed(seed, 2));
+    rfir::sim::TSimRandom rng(streamSeed(seed, 2));
     const auto& ir = cfg.ir;
     rfir::ir::TLatticeParams lp;
     lp.pitch = ir.pitch;
@@ -91,7 +91,7 @@ void buildEmitters(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
 }
 
 void buildLandmarks(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
-    rfir::models::TRandom rng(streamSeed(seed, 3));
+    rfir::sim::TSimRandom rng(streamSeed(seed, 3));
     const double area = (cfg.areaMaxX - cfg.areaMinX) * (cfg.areaMaxY - cfg.areaMinY);
     const int n = std::max(1, int(std::lround(cfg.rb.density * area)));
     for (int i = 0; i < n; i++) {

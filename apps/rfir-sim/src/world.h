@@ -10,7 +10,7 @@
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <rfir/models/random.h>
+#include "sim_random.h"
 
 #include <string>
 #include <unordered_map>
@@ -46,18 +46,18 @@ TWorld buildWorld(const TSimConfig& cfg, uint64_t seed);
  * step model), each missed with cfg.rfid.missProbability. */
 rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
                                                   const mrpt::poses::CPose2D& robot,
-                                                  rfir::models::TRandom& rng);
+                                                  rfir::sim::TSimRandom& rng);
 
 /** One IR reading per receiver (thesis eq. 5.3 plus noise; raw window if so
  * configured). */
 rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
                                               const mrpt::poses::CPose2D& robot,
-                                              rfir::models::TRandom& rng);
+                                              rfir::sim::TSimRandom& rng);
 
 /** Range and bearing of every landmark in range and field of view (SPEC 7). */
 mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
                                                  const mrpt::poses::CPose2D& robot,
-                                                 rfir::models::TRandom& rng);
+                                                 rfir::sim::TSimRandom& rng);
 
 /** Noise-free voltage of an emitter at horizontal distance d and vertical
  * distance h: eq. 5.3 scaled by (referenceHeight / h)^2 (inverse-square law;

@@ -298,7 +298,6 @@ int runSlamApp(const TAppArgs& args) {
         a.config ? *a.config : stockConfigPath(a.method.value_or("pf"));
     rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
     cfg.seed = a.seed;
-    mrpt::random::getRandomGenerator().randomize(uint32_t(a.seed));
     findGroundTruth(a);
 
     logStream(a) << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "

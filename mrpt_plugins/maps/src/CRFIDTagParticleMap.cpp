@@ -188,9 +188,16 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
 double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
                                                     const mrpt::math::TPose2D& robot,
                                                     const double* plainTerms) const {
+    return robotReadsLogLikelihood(r, robot, std::cos(robot.phi), std::sin(robot.phi),
+                                   plainTerms);
+}
+
+double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
+                                                    const mrpt::math::TPose2D& robot,
+                                                    double c, double s,
+                                                    const double* plainTerms) const {
     double sum = 0;
     if (!r.rangeBearing) {
-        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
         for (const auto& rd : r.reads)
             sum += plainTerms && rd.plainCurrent
                        ? plainTerms[rd.known]

@@ -4,7 +4,6 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CActionCollection.h>
-#include <mrpt/random/RandomGenerators.h>
 
 #include <rfir/models/ini_reader.h>
 
@@ -32,8 +31,8 @@ void TFastSLAMOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
 }
 
 void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
-                               double stdPhi) {
-    auto& rng = mrpt::random::getRandomGenerator();
+                               double stdPhi, rfir::models::TRandom& rng) {
+    rng_ = &rng;
     m_particles.assign(M, {});
     for (auto& p : m_particles) {
         p.log_w = 0;
@@ -82,8 +81,10 @@ double CFastSLAMParticles::updateParticle(TFastSLAMParticle& p,
 void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
-    drawMotion(action, m_particles,
-               [](auto& p) -> mrpt::poses::CPose2D& { return p.d.pose; });
+    if (const auto g = motionOf(action))
+        drawMotion(
+            *g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d.pose; },
+            *rng_);
     if (!detections_ || detections_->empty()) return;
     std::vector<size_t> idx;
     for (const auto& d : *detections_) idx.push_back(indexOf(d));

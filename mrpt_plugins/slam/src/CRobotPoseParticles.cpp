@@ -3,7 +3,6 @@
 #include <rfir/slam/slam_options.h>
 
 #include <mrpt/obs/CActionCollection.h>
-#include <mrpt/random/RandomGenerators.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +11,9 @@
 
 namespace rfir::slam {
 void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
-                                double stdPhi) {
-    auto& rng = mrpt::random::getRandomGenerator();
+                                double stdPhi, rfir::models::TRandom& rng) {
+    m_rng = &rng;
+    m_ess = -1;
     m_particles.assign(M, {});
     for (auto& p : m_particles) {
         p.log_w = 0;
@@ -38,6 +38,7 @@ void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
     for (const auto& q : m_particles) best = std::max(best, q.log_w);
     m_particles.at(i).d = p;
     m_particles.at(i).log_w = best;
+    m_ess = -1;
 }
 
 double CRobotPoseParticles::getW(size_t i) const {
@@ -46,6 +47,7 @@ double CRobotPoseParticles::getW(size_t i) const {
 
 void CRobotPoseParticles::setW(size_t i, double w) {
     m_particles.at(i).log_w = w;
+    m_ess = -1;
 }
 
 double CRobotPoseParticles::normalizeWeights(double* out_max_log_w) {
@@ -55,12 +57,22 @@ double CRobotPoseParticles::normalizeWeights(double* out_max_log_w) {
         maxW = std::max<double>(maxW, p.log_w);
         minW = std::min<double>(minW, p.log_w);
     }
-    for (auto& p : m_particles) p.log_w -= maxW;
+    // The ESS in the same pass (one exp per particle): CParticleFilter asks
+    // for it right after, and the resampling stage once more.
+    double s1 = 0, s2 = 0;
+    for (auto& p : m_particles) {
+        p.log_w -= maxW;
+        const double w = std::exp(p.log_w);
+        s1 += w;
+        s2 += w * w;
+    }
+    m_ess = s2 > 0 ? s1 * s1 / (s2 * double(m_particles.size())) : 0;
     if (out_max_log_w) *out_max_log_w = maxW;
     return std::exp(maxW - minW);
 }
 
 double CRobotPoseParticles::ESS() const {
+    if (m_ess >= 0) return m_ess;
     // One exp per particle (not two): this runs on every step.
     thread_local std::vector<double> lin;
     lin.resize(m_particles.size());
@@ -81,6 +93,7 @@ void CRobotPoseParticles::performSubstitution(const std::vector<size_t>& indx) {
     CParticleList parts(sorted.size());
     for (size_t i = 0; i < sorted.size(); i++) parts[i] = m_particles[sorted[i]];
     m_particles = std::move(parts);
+    m_ess = -1;
 }
 
 void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
@@ -88,11 +101,16 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     // Motion model (SPEC section 3): one draw of the odometry increment's
     // Gaussian per particle.
-    drawMotion(action, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; });
-    if (afterMotion) afterMotion();
-    if (!logLikelihood) return;
+    if (const auto g = motionOf(action))
+        drawMotion(
+            *g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; },
+            *m_rng);
+    m_ess = -1;
+    if (!m_model) return;
+    m_model->afterMotion();
+    if (!m_model->weighs()) return;
     for (size_t i = 0; i < m_particles.size(); i++) {
-        const double ll = logLikelihood(i, m_particles[i].d);
+        const double ll = m_model->logLikelihood(i, m_particles[i].d);
         if (!std::isfinite(ll))
             throw std::runtime_error(
                 "the landmark map returned a non-finite log-likelihood");

@@ -1,6 +1,7 @@
 /* rfir: Gauss-Newton (Levenberg-Marquardt damped) smoothing of a SLAM run over
  * odometry and RFID read factors; see graph_smoother.h. */
 #include <rfir/models/detection_likelihood.h>
+#include <rfir/models/odometry_noise.h>
 #include <rfir/slam/detections.h>
 #include <rfir/slam/graph_smoother.h>
 
@@ -41,11 +42,11 @@ class CProblem {
         odo_.reserve(K_);
         for (const auto& s : in) {
             const auto u = s.odometryIncrement.value_or(mrpt::poses::CPose2D());
-            const double d = std::hypot(u.x(), u.y()), a = std::abs(u.phi());
-            const auto& m = p.motion;
-            odo_.push_back({u.x(), u.y(), u.phi(),
-                            1.0 / (m.a1 * d + m.a2 * a + m.min_std_xy),
-                            1.0 / (m.a3 * d + m.a4 * a + m.min_std_phi)});
+            // The filters' odometry noise model (models/odometry_noise.h).
+            double wxy, wphi;
+            rfir::models::odometryInformationSqrt(p.motion.noise(), u.x(), u.y(), u.phi(),
+                                                  wxy, wphi);
+            odo_.push_back({u.x(), u.y(), u.phi(), wxy, wphi});
         }
         for (size_t k = 0; k < K_; k++) {
             if (!in[k].rfid) continue;

@@ -45,6 +45,17 @@ mrpt::obs::CActionRobotMovement2D makeMovement(const mrpt::poses::CPose2D& incre
     return act;
 }
 
+std::optional<rfir::models::OdometryGaussian> motionOf(
+    const mrpt::obs::CActionCollection* action) {
+    const auto mv = action ? action->getBestMovementEstimation() : nullptr;
+    if (!mv) return std::nullopt;
+    const auto& u = mv->rawOdometryIncrementReading;
+    const auto& m = mv->motionModelConfiguration.gaussianModel;
+    const rfir::models::OdometryNoiseParams p{m.a1, m.a2,       m.a3,
+                                              m.a4, m.minStdXY, m.minStdPHI};
+    return rfir::models::OdometryGaussian::fromOdometry(u.x(), u.y(), u.phi(), p);
+}
+
 std::optional<mrpt::poses::CPose2D> odometryIncrement(
     const mrpt::obs::CActionCollection* acts) {
     if (!acts) return std::nullopt;

@@ -1,4 +1,5 @@
 #include <rfir/slam/CFastSLAMParticles.h>
+#include <rfir/slam/robot_resampling.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
 
@@ -22,11 +23,12 @@ class CFastSLAMEngine : public CSlamEngine {
   public:
     CFastSLAMEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
         : cfg_(c), hdr_(h), pf_(c.fastslam) {
-        filter_.m_options = c.slam.pfOptions();
+        filter_.m_options = withoutMrptResampling(c.slam.pfOptions());
     }
     void reset(const mrpt::poses::CPose2D& start) override {
+        rng_.randomize(cfg_.seed);  // the run's one generator (--seed)
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
-                  cfg_.slam.start_std_phi);
+                  cfg_.slam.start_std_phi, rng_);
     }
     void step(const TSlamInput& in) override {
         std::vector<TDetection> dets;
@@ -34,7 +36,8 @@ class CFastSLAMEngine : public CSlamEngine {
         if (in.rb) appendDetections(*in.rb, hdr_, dets);
         pf_.setDetections(&dets);
         const auto acts = motionAction(in, cfg_.motion);
-        filter_.executeOn(pf_, &acts, nullptr);
+        filter_.executeOn(pf_, &acts, nullptr);  // motion, weighing, normalising
+        resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
         pf_.setDetections(nullptr);
         pose_ = pf_.meanPose();
     }
@@ -52,6 +55,7 @@ class CFastSLAMEngine : public CSlamEngine {
     rfir::obs::CObservationLogHeader hdr_;
     CFastSLAMParticles pf_;
     mrpt::bayes::CParticleFilter filter_;
+    rfir::models::TRandom rng_;
     mrpt::poses::CPose2D pose_;
 };
 

@@ -2,12 +2,12 @@
 #include <rfir/models/ini_reader.h>
 #include <rfir/models/resampling.h>
 #include <rfir/slam/CRobotPoseParticles.h>
+#include <rfir/slam/robot_resampling.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
 
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/obs/CActionCollection.h>
-#include <mrpt/random/RandomGenerators.h>
 #include <rfir/models/random.h>
 
 #include <cmath>
@@ -73,7 +73,7 @@ TConsistency checkConsistency(const CRFIDTagParticleMap& map,
     for (size_t i = 0; i < pf.m_particles.size(); i++) {
         const auto& p = pf.m_particles[i];
         const mrpt::math::TPose2D pose = p.d.asTPose();
-        const double cphi = std::cos(pose.phi), sphi = std::sin(pose.phi);
+        const double cphi = p.d.phi_cos(), sphi = p.d.phi_sin();  // cached
         double ll = 0;
         for (size_t k = 0; k < K; k++) {
             const TDetection& d = c.anchors[k].det;
@@ -92,21 +92,26 @@ TConsistency checkConsistency(const CRFIDTagParticleMap& map,
     return c;
 }
 
-class CTagMapEngine : public CSlamEngine {
+class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepModel {
   public:
     CTagMapEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
         : cfg_(c), hdr_(h), kidnap_(c.kidnap) {
-        filter_.m_options = c.slam.pfOptions();
-        rng_.randomize(c.seed + 7919);
+        filter_.m_options = withoutMrptResampling(c.slam.pfOptions());
+        pf_.setStepModel(this);
     }
+    CTagMapEngine(const CTagMapEngine&) = delete;
+    CTagMapEngine& operator=(const CTagMapEngine&) = delete;
     void reset(const mrpt::poses::CPose2D& start) override {
+        // The run's one generator (--seed): motion, resampling, kidnap
+        // resetting; the map's per-step streams are seeded from it.
+        rng_.randomize(cfg_.seed);
         map_.clear();
         map_.insertionOptions = cfg_.tagmap->insertion;
         map_.likelihoodOptions = cfg_.tagmap->likelihood;
-        map_.setRandomSeed(cfg_.seed);
+        map_.setRandomSeed(rng_.drawUniform64bit());
         map_.setLandmarkNames(hdr_.rbLandmarkNames);
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
-                  cfg_.slam.start_std_phi);
+                  cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
         pose_ = start;
     }
@@ -116,6 +121,14 @@ class CTagMapEngine : public CSlamEngine {
     size_t resets() const override { return kidnap_.resets(); }
 
   private:
+    /** @name The stages executeOn runs between the motion and the weighing.
+     * @{ */
+    void afterMotion() override { beforeWeighing(dets_, literal_); }
+    bool weighs() const override { return !obs_.empty(); }
+    double logLikelihood(size_t i, const mrpt::poses::CPose2D& p) const override {
+        return weigh(i, p);
+    }
+    /** @} */
     void beforeWeighing(const std::vector<TDetection>& dets, bool literal);
     void resolveReads(bool reuseTerms);
     /** Particle i's log-likelihood: the sum computeObservationLikelihood
@@ -125,7 +138,8 @@ class CTagMapEngine : public CSlamEngine {
         const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
         const double* t = termsWidth_ ? &terms_[i * termsWidth_] : nullptr;
         double ll = 0;
-        for (const auto& r : reads_) ll += map_.robotReadsLogLikelihood(r, pose, t);
+        const double c = p.phi_cos(), s = p.phi_sin();  // cached in the pose
+        for (const auto& r : reads_) ll += map_.robotReadsLogLikelihood(r, pose, c, s, t);
         return ll;
     }
     void insert(const mrpt::poses::CPose2D& at) {
@@ -153,6 +167,8 @@ class CTagMapEngine : public CSlamEngine {
     CKidnapMonitor kidnap_;
     rfir::models::TRandom rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
+    std::vector<TDetection> dets_;  //!< this step's detections
+    bool literal_ = false;          //!< tags updated before the weighing
     bool mapThisStep_ = true;
     std::vector<CRFIDTagParticleMap::TRobotReads> reads_;
     std::vector<double> terms_;  //!< kidnap check's per-particle terms
@@ -205,15 +221,17 @@ void CTagMapEngine::resolveReads(bool reuseTerms) {
 }
 
 void CTagMapEngine::step(const TSlamInput& in) {
+    // The step, in order (issue 11's pipeline; 003 Algorithm 1, 004 Alg. 1):
+    // 1. this step's observations and detections;
     obs_.clear();
-    std::vector<TDetection> dets;
+    dets_.clear();
     if (in.rfid) {
         obs_.push_back(in.rfid);
-        appendDetections(*in.rfid, dets);
+        appendDetections(*in.rfid, dets_);
     }
     if (in.rb) {
         obs_.push_back(in.rb);
-        appendDetections(*in.rb, hdr_, dets);
+        appendDetections(*in.rb, hdr_, dets_);
     }
     if (cfg_.method() == TMethod::Odometry) {
         // Dead reckoning: map the tags from the odometry poses, no correction.
@@ -221,22 +239,21 @@ void CTagMapEngine::step(const TSlamInput& in) {
         insert(pose_);
         return;
     }
-    const bool literal = map_.updateTagsBeforeWeighing();
-    pf_.afterMotion = [&]() { beforeWeighing(dets, literal); };
-    pf_.logLikelihood = nullptr;
-    if (!obs_.empty())
-        pf_.logLikelihood = [this](size_t i, const mrpt::poses::CPose2D& p) {
-            return weigh(i, p);
-        };
+    literal_ = map_.updateTagsBeforeWeighing();
+    // 2-4. MRPT's CParticleFilter::executeOn: propagate every particle by a
+    // draw of the odometry Gaussian (engine's generator), then afterMotion()
+    // (kidnap check, reads resolved once; literal policy: tag update), then
+    // weigh with logLikelihood(), then normalise;
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement)
         acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
     filter_.executeOn(pf_, &acts, nullptr);
-    pf_.afterMotion = nullptr;
-    pf_.logLikelihood = nullptr;
+    // 5. resample when the ESS is low (MRPT's scheme, engine's generator);
+    resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
     reads_.clear();
+    // 6. the estimate, and the tag update of the revisit policies.
     pose_ = pf_.meanPose();
-    if (!literal && mapThisStep_)
+    if (!literal_ && mapThisStep_)
         insert(predictedForInsert_ ? *predictedForInsert_ : pose_);
 }
 

@@ -158,6 +158,9 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
      * the reads marked plainCurrent. */
     double robotReadsLogLikelihood(const TRobotReads& r, const mrpt::math::TPose2D& robot,
                                    const double* plainTerms = nullptr) const;
+    /** The same with c, s = cos, sin of robot.phi (cached by the caller). */
+    double robotReadsLogLikelihood(const TRobotReads& r, const mrpt::math::TPose2D& robot,
+                                   double c, double s, const double* plainTerms) const;
 
     /** @name Instrumentation: tag entries touched (created or updated).
      * @{ */

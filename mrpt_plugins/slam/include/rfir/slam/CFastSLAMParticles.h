@@ -4,6 +4,8 @@
  * an update copies one EKF and its trie path. */
 #pragma once
 
+#include <rfir/models/random.h>
+
 #include <rfir/slam/detections.h>
 #include <rfir/slam/landmark_ekf.h>
 #include <rfir/slam/persistent_vector.h>
@@ -43,8 +45,10 @@ class CFastSLAMParticles
   public:
     explicit CFastSLAMParticles(const TFastSLAMOptions& o = {}) : model_(o.meas) {}
 
-    /** M particles at `start`, with Gaussian spread (std) in xy and heading. */
-    void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi);
+    /** M particles at `start`, with Gaussian spread (std) in xy and heading;
+     * `rng` (the engine's, outliving this set) draws their motion too. */
+    void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi,
+               rfir::models::TRandom& rng);
     /** The detections the next CParticleFilter::executeOn step weighs with. */
     void setDetections(const std::vector<TDetection>* d) { detections_ = d; }
 
@@ -71,6 +75,7 @@ class CFastSLAMParticles
     double updateParticle(TFastSLAMParticle& p, const std::vector<size_t>& idx);
 
     CGaussianLandmarkModel model_;
+    rfir::models::TRandom* rng_ = nullptr;  //!< the engine's generator
     const std::vector<TDetection>* detections_ = nullptr;
     std::map<std::string, size_t> index_;
     std::vector<std::string> names_;

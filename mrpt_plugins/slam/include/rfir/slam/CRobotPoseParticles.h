@@ -1,16 +1,18 @@
 /* rfir: the robot filter of PF-SLAM and PS-SLAM (SPEC section 4; 003
  * Algorithm 1 lines 2-4 and 19-28; 004 Algorithm 1) on MRPT's particle-filter
  * machinery: CParticleFilter::executeOn drives this class, which moves the
- * particles with the odometry model and weighs them with `logLikelihood`: the
- * SLAM engine passes the landmark map's reads resolved once per step, the same
- * sum as the map's computeObservationLikelihood for the ROBOT pose. */
+ * particles with the odometry model (the engine's generator) and weighs them
+ * with the engine's IStepModel: the landmark map's reads resolved once per
+ * step, the same sum as the map's computeObservationLikelihood for the ROBOT
+ * pose. Resampling follows executeOn (robot_resampling.h). */
 #pragma once
 
 #include <mrpt/bayes/CParticleFilterCapable.h>
 #include <mrpt/bayes/CParticleFilterData.h>
 #include <mrpt/poses/CPose2D.h>
 
-#include <functional>
+#include <rfir/models/random.h>
+
 #include <vector>
 
 namespace rfir::slam {
@@ -23,15 +25,26 @@ class CRobotPoseParticles
       public mrpt::bayes::CParticleFilterDataImpl<CRobotPoseParticles,
                                                   TPoseParticleData::CParticleList> {
   public:
-    /** M particles at `start`, with Gaussian spread (std) in xy and heading. */
-    void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi);
+    /** M particles at `start`, with Gaussian spread (std) in xy and heading;
+     * `rng` (the engine's, outliving this set) draws their motion too. */
+    void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi,
+               rfir::models::TRandom& rng);
 
-    /** Log-likelihood of particle i at its moved pose, for the next executeOn
-     * step (empty: motion only). */
-    std::function<double(size_t i, const mrpt::poses::CPose2D& pose)> logLikelihood;
-    /** Called after the motion and before the weighing: where the literal
-     * PF-SLAM order updates the tags. */
-    std::function<void()> afterMotion;
+    /** The engine's stages inside CParticleFilter::executeOn, fixed for the
+     * run (setStepModel), not installed per step. */
+    class IStepModel {
+      public:
+        virtual ~IStepModel() = default;
+        /** After the motion, before the weighing: the kidnap check and, under
+         * the literal policy, the tag update. */
+        virtual void afterMotion() = 0;
+        /** Whether this step's observation weighs the robot. */
+        virtual bool weighs() const = 0;
+        /** Log-likelihood of particle i at its moved pose. */
+        virtual double logLikelihood(size_t i,
+                                     const mrpt::poses::CPose2D& pose) const = 0;
+    };
+    void setStepModel(IStepModel* m) { m_model = m; }
 
     mrpt::poses::CPose2D meanPose() const;
 
@@ -52,6 +65,10 @@ class CRobotPoseParticles
     /** @} */
 
   protected:
+    rfir::models::TRandom* m_rng = nullptr;  //!< the engine's generator
+    IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
+    double m_ess = -1;  //!< ESS computed by normalizeWeights; < 0: stale
+
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,
         const mrpt::obs::CSensoryFrame* observation,

@@ -9,6 +9,8 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <rfir/models/odometry_noise.h>
+
 #include <optional>
 
 namespace rfir::slam {
@@ -29,6 +31,10 @@ struct TMotionOptions : public mrpt::config::CLoadableOptions {
                           const std::string& s) const override;
     /** Rejects negative values, naming the key. */
     mrpt::obs::CActionRobotMovement2D::TMotionModelOptions toMRPT() const;
+    /** The models layer's noise parameters (the same a1..a4 model). */
+    rfir::models::OdometryNoiseParams noise() const {
+        return {a1, a2, a3, a4, min_std_xy, min_std_phi};
+    }
 };
 
 /** The Gaussian movement for an odometry increment, with our noise model. */
@@ -39,21 +45,28 @@ mrpt::obs::CActionRobotMovement2D makeMovement(const mrpt::poses::CPose2D& incre
 std::optional<mrpt::poses::CPose2D> odometryIncrement(
     const mrpt::obs::CActionCollection* acts);
 
-/** The prediction both robot filters share: every particle's pose moves by
- * its own draw of the action's odometry Gaussian (SPEC section 3). `poseOf(p)`
- * returns a reference to particle p's CPose2D. Without a movement, nothing
- * moves. */
+/** The Gaussian pose change of the action's odometry increment, with the
+ * noise options the action was built with (its MRPT Gaussian-model options);
+ * nullopt without a movement. One Cholesky per step. */
+std::optional<rfir::models::OdometryGaussian> motionOf(
+    const mrpt::obs::CActionCollection* action);
+
+/** The prediction every robot filter shares: each particle's pose moves by
+ * its own draw of the odometry Gaussian (SPEC section 3), a plain loop of three
+ * normal draws and one composition per particle. `poseOf(p)` returns a
+ * reference to particle p's CPose2D. */
 template <class Particles, class PoseOf>
-void drawMotion(const mrpt::obs::CActionCollection* action, Particles& particles,
-                PoseOf&& poseOf) {
-    const auto mv = action ? action->getBestMovementEstimation() : nullptr;
-    if (!mv) return;
-    mv->prepareFastDrawSingleSamples();
-    mrpt::poses::CPose2D inc;
+void drawMotion(const rfir::models::OdometryGaussian& g, Particles& particles,
+                PoseOf&& poseOf, rfir::models::TRandom& rng) {
     for (auto& p : particles) {
-        mv->fastDrawSingleSample(inc);
         mrpt::poses::CPose2D& pose = poseOf(p);
-        pose = pose + inc;
+        // The heading's cos and sin are the pose's cached ones (computed once
+        // after the last move, by the weighing): one sincos per particle.
+        double x = pose.x(), y = pose.y(), phi = pose.phi();
+        g.propagate(rng, x, y, phi, pose.phi_cos(), pose.phi_sin());
+        pose.x(x);
+        pose.y(y);
+        pose.phi(phi);
     }
 }
 

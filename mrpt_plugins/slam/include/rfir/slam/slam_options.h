@@ -68,8 +68,8 @@ mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
         sw += w;
         x += w * p.x();
         y += w * p.y();
-        c += w * std::cos(p.phi());
-        s += w * std::sin(p.phi());
+        c += w * p.phi_cos();  // cached in the pose: one sincos per new heading
+        s += w * p.phi_sin();
     }
     if (sw <= 0) return get(0);
     return {x / sw, y / sw, std::atan2(s, c)};

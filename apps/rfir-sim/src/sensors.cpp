@@ -14,9 +14,13 @@
 
 namespace rfir::sim::detail {
 std::string faultNumber(double v) {
-    std::ostringstream o;
-    o << std::setprecision(15) << v;
-    return o.str();
+    // The shortest of 15-17 digits that reads back as v: a record's time is
+    // then the log's time exactly.
+    for (int p = 15;; p++) {
+        std::ostringstream o;
+        o << std::setprecision(p) << v;
+        if (p == 17 || std::stod(o.str()) == v) return o.str();
+    }
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -96,6 +97,13 @@ void runSteps(TSimRun& run, TSimOutput& out) {
     }
 }
 
+/** A position in a record, at the map files' precision (1 um). */
+std::string coord(double v) {
+    std::ostringstream o;
+    o << std::setprecision(9) << std::round(v * 1e6) / 1e6;
+    return o.str();
+}
+
 /** The faults that are not events (dead readers, emitters, biases) head the
  * ground-truth record list; the localizer's map gets the moved emitters. */
 void recordStaticFaults(const TSimConfig& cfg, const TWorld& w, TSimOutput& out) {
@@ -110,8 +118,7 @@ void recordStaticFaults(const TSimConfig& cfg, const TWorld& w, TSimOutput& out)
     for (size_t i = 0; i < w.emitters.size(); i++)
         if (w.emitterFailed[i])
             head.push_back("failed_emitter " + w.emitters[i].id + " " +
-                           faultNumber(w.emitters[i].x) + " " +
-                           faultNumber(w.emitters[i].y));
+                           coord(w.emitters[i].x) + " " + coord(w.emitters[i].y));
     if (cfg.ir.enabled && !cfg.ir.moved.empty()) {
         out.localizerMap = out.gtMap;
         for (const auto& m : cfg.ir.moved) {
@@ -119,16 +126,14 @@ void recordStaticFaults(const TSimConfig& cfg, const TWorld& w, TSimOutput& out)
             for (auto& e : out.localizerMap)
                 if (e.kind == rfir::common::TMapEntry::Kind::Emitter &&
                     std::hypot(e.x - m.x, e.y - m.y) < 0.05) {
-                    head.push_back("moved_emitter " + e.id + " " + faultNumber(e.x) +
-                                   " " + faultNumber(e.y) + " " +
-                                   faultNumber(e.x + m.dx) + " " +
-                                   faultNumber(e.y + m.dy));
+                    head.push_back("moved_emitter " + e.id + " " + coord(e.x) + " " +
+                                   coord(e.y) + " " + coord(e.x + m.dx) + " " +
+                                   coord(e.y + m.dy));
                     e.x += m.dx, e.y += m.dy, found = true;
                 }
             if (!found)
-                throw std::invalid_argument("[ir] moved: no emitter at '" +
-                                            faultNumber(m.x) + " " + faultNumber(m.y) +
-                                            "' in the lattice");
+                throw std::invalid_argument("[ir] moved: no emitter at '" + coord(m.x) +
+                                            " " + coord(m.y) + "' in the lattice");
         }
     }
     out.faults.insert(out.faults.begin(), head.begin(), head.end());

@@ -79,7 +79,8 @@ mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TW
  * the seed fitted it at 1.2 m only). */
 double modelVoltage(const TIRConfig& ir, double d, double h);
 
-/** A number of a ground-truth fault record (15 significant digits). */
+/** A number of a ground-truth fault record (the shortest of 15-17
+ * significant digits that reads back exactly). */
 std::string faultNumber(double v);
 
 /** Deterministic per-purpose generator seed derived from the run seed. */

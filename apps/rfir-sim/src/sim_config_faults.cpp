@@ -84,8 +84,8 @@ void validateFaults(const TSimConfig& c) {
                 " does not exist (" + std::to_string(c.readers.size()) + " readers)");
     if (c.rfid.polling == TRFIDConfig::Polling::RoundRobin &&
         c.rfid.pollJitter * c.rfid.pollRate * double(c.readers.size()) >= 0.5)
-        bad("[rfid] poll_jitter: must be under half the interval between two polls "
-            "(1 / (poll_rate * readers))");
+        bad("[rfid] poll_jitter and [rfid] poll_rate: the jitter must be under half "
+            "the interval between two polls, 1 / (poll_rate * readers)");
 }
 
 bool TSimConfig::hasFaults() const {

@@ -13,7 +13,9 @@
  *   out.groundTruth;  out.gtMap;  out.header;
  *
  * Step k is at t = cfg.startTime + k cfg.dt (startTime = 1 s: MRPT takes a zero
- * timestamp as invalid); out.groundTruth[k] is the true pose of out.steps[k].
+ * timestamp as invalid) unless cfg.asyncTiming() (an odometry rate or latency,
+ * round-robin polls: steps at every event); out.groundTruth[k] is the true pose
+ * of out.steps[k]. Faults (off by default): out.faults, docs/simulator.md.
  *
  * or from a stock INI:
  *   auto cfg = rfir::sim::loadSimConfig(RFIR_SOURCE_DIR

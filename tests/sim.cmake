@@ -7,3 +7,10 @@ if(TARGET rfir_sim)
     LIBS rfir_sim rfir_ir)
   add_dependencies(test_sim rfir-sim)
 endif()
+# Every stock fault simulation through the text log and back (rfir-import's
+# conversions).
+if(TARGET rfir_sim)
+  rfir_add_test(test_sim_faults_roundtrip
+    SOURCES test_sim_faults_roundtrip.cpp
+    LIBS rfir_sim rfir_appcommon)
+endif()

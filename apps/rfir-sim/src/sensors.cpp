@@ -121,24 +121,26 @@ void applyIRFaults(const TIRConfig& ir, const TWorld& w,
     const std::string at = faultNumber(f.t) + " " + rd.receiver.id + " ";
     if (ir.wrongCodeRate > 0 && rng.drawUniform(0.0, 1.0) < ir.wrongCodeRate) {
         const auto truth = rd.codes;
-        if (rng.drawUniform(0.0, 1.0) < ir.wrongCodeOtherId) {
-            std::vector<size_t> others;
-            for (size_t j = 0; j < w.emitters.size(); j++)
-                if (w.emitters[j].codes != truth) others.push_back(j);
-            if (!others.empty())
-                rd.codes =
-                    w.emitters[others[rng.drawUniform32bit() % others.size()]].codes;
-        } else {
-            std::vector<uint8_t> free;
-            for (uint8_t c = 1; c <= 9; c++)
-                if (std::find(truth.begin(), truth.end(), c) == truth.end())
-                    free.push_back(c);
+        std::vector<size_t> others;
+        for (size_t j = 0; j < w.emitters.size(); j++)
+            if (w.emitters[j].codes != truth) others.push_back(j);
+        std::vector<uint8_t> free;
+        for (uint8_t c = 1; c <= 9; c++)
+            if (std::find(truth.begin(), truth.end(), c) == truth.end())
+                free.push_back(c);
+        // Another emitter's ID, or one code misread; whichever exists when
+        // the other cannot (one ID only, or all nine codes sent).
+        const bool other = rng.drawUniform(0.0, 1.0) < ir.wrongCodeOtherId;
+        if (!others.empty() && (other || free.empty()))
+            rd.codes = w.emitters[others[rng.drawUniform32bit() % others.size()]].codes;
+        else if (!free.empty()) {
             rd.codes[rng.drawUniform32bit() % rd.codes.size()] =
                 free[rng.drawUniform32bit() % free.size()];
             std::sort(rd.codes.begin(), rd.codes.end());
         }
-        f.log->push_back("wrong_code " + at + rfir::ir::emitterIdFromCodes(truth) + " " +
-                         rfir::ir::emitterIdFromCodes(rd.codes));
+        if (rd.codes != truth)  // else nothing else to spell
+            f.log->push_back("wrong_code " + at + rfir::ir::emitterIdFromCodes(truth) +
+                             " " + rfir::ir::emitterIdFromCodes(rd.codes));
     }
     if (ir.voltOutlierRate > 0 && rng.drawUniform(0.0, 1.0) < ir.voltOutlierRate) {
         const double v = rng.drawUniform(0.0, ir.voltOutlierMax);

@@ -18,7 +18,7 @@ void loadOdometryFaults(const CIniSection& s, TOdometryNoise& o) {
     s.num("scale_error", o.scaleError, -0.5, 0.5);
     s.num("rot_scale_error", o.rotScaleError, -0.5, 0.5);
     s.num("heading_drift_error", o.headingDriftError, -1, 1);
-    s.nonNegative("rate", o.rate, 10000);
+    s.nonNegative("rate", o.rate, 1000);
     s.nonNegative("latency", o.latency, 10);
     std::vector<std::vector<double>> l;
     if (s.numberLists("slip_times", {1}, l)) {
@@ -42,8 +42,8 @@ void loadRFIDFaults(const CIniSection& s, TRFIDConfig& r) {
         if (l.size() != 1) s.fail("ghost_distance", "expected one entry 'min max'");
         r.ghostMinDistance = l[0][0], r.ghostMaxDistance = l[0][1];
         if (!(r.ghostMinDistance >= 0 && r.ghostMaxDistance > r.ghostMinDistance &&
-              r.ghostMaxDistance <= 100))
-            s.fail("ghost_distance", "need 0 <= min < max <= 100 (m)");
+              r.ghostMaxDistance <= 10))
+            s.fail("ghost_distance", "need 0 <= min < max <= 10 (m)");
     }
     if (s.numberLists("dead_readers", {3}, l)) {
         r.deadReaders.clear();
@@ -59,7 +59,7 @@ void loadRFIDFaults(const CIniSection& s, TRFIDConfig& r) {
     if (w >= 0) r.writeEmptyPolls = w == 0;
     const int p = s.choice("polling", {"together", "round_robin"});
     if (p >= 0) r.polling = TRFIDConfig::Polling(p);
-    s.positive("poll_rate", r.pollRate, 1000);
+    s.positive("poll_rate", r.pollRate, 200);
     s.nonNegative("poll_jitter", r.pollJitter, 10);
 }
 

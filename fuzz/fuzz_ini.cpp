@@ -12,7 +12,7 @@
  *                      the valid emitters.txt) */
 #include "fuzz_util.h"
 
-#include <localize_config.h>
+#include <rfir/localize/localize_config.h>
 #include <rfir/maps/CIREmitterMap.h>
 #include <rfir/maps/CRFIDTagParticleMap.h>
 #include <rfir/obs/registerAllClasses.h>

@@ -33,7 +33,7 @@ done
 
 # The source tree's INIs, as they are now (even if nothing was rebuilt).
 "$BUILD/bin/rfir-ir-experiments" --config-dir config_ini --work-dir "$WORK" \
-  --notes apps/rfir-localize/results_notes.md "${args[@]}"
+  --notes apps/rfir-ir-experiments/results_notes.md "${args[@]}"
 
 # The same thing through the programs, on one data set.
 cli="$WORK/cli"

@@ -5,7 +5,7 @@
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_config.h>
 
-#include "localize_config.h"
+#include <rfir/localize/localize_config.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>

@@ -3,7 +3,7 @@
 // text reader; a directory given as a file is named as such.
 #include "test_tmpdir.h"
 
-#include <localize_config.h>
+#include <rfir/localize/localize_config.h>
 #include <rfir/common/log_convert.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/text_input.h>

@@ -1,8 +1,8 @@
 /* rfir-localize: Monte Carlo localization of a robot under the ceiling IR
  * emitters of thesis chapter 5, from an unknown start. See docs/ir.md. */
-#include "localize_config.h"
-#include "localize_output.h"
-#include "localize_run.h"
+#include <rfir/localize/localize_config.h>
+#include <rfir/localize/localize_output.h>
+#include <rfir/localize/localize_run.h>
 
 #include <rfir/common/cli.h>
 #include <rfir/eval/metrics.h>

@@ -1,9 +1,9 @@
 /* rfir-ir-experiments: runs and aggregation. */
 #include "runs.h"
 
-#include "localize_config.h"
-#include "localize_output.h"
-#include "localize_run.h"
+#include <rfir/localize/localize_config.h>
+#include <rfir/localize/localize_output.h>
+#include <rfir/localize/localize_run.h>
 
 #include <rfir/common/ini_override.h>
 #include <rfir/common/map_io.h>

@@ -1,7 +1,7 @@
 /* rfir-localize: the output files. */
 #pragma once
 
-#include "localize_run.h"
+#include <rfir/localize/localize_run.h>
 
 #include <string>
 

@@ -1,7 +1,7 @@
 /* rfir-localize: one pass over a rawlog. */
 #pragma once
 
-#include "localize_config.h"
+#include <rfir/localize/localize_config.h>
 
 #include <rfir/common/trajectory_io.h>
 

@@ -1,5 +1,5 @@
 /* rfir-localize: configuration. */
-#include "localize_config.h"
+#include <rfir/localize/localize_config.h>
 
 #include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>

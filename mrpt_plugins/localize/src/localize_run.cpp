@@ -1,5 +1,5 @@
 /* rfir-localize: one pass over a rawlog. */
-#include "localize_run.h"
+#include <rfir/localize/localize_run.h>
 
 #include <rfir/common/rawlog_io.h>
 

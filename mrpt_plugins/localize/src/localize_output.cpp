@@ -1,5 +1,5 @@
 /* rfir-localize: the output files. */
-#include "localize_output.h"
+#include <rfir/localize/localize_output.h>
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/map_io.h>

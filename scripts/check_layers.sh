@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# The layers point one way (docs/architecture.md): read the library graph from
+# CMake (--graphviz, a configure of its own, nothing built) and fail when a
+# library links one of its own layer or above, or when a folder of apps/
+# declares a library (a program folder holds its main and command line).
+#   scripts/check_layers.sh [work dir]      (default: a temporary folder)
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+WORK=${1:-$(mktemp -d)}
+[ $# -ge 1 ] || trap 'rm -rf "$WORK"' EXIT
+mkdir -p "$WORK"
+
+# Layer of each library, lowest first. Equal numbers may not link each other.
+declare -A RANK=(
+  [rfir_models]=1 [rfir_observations]=2 [rfir_maps]=3 [rfir_slam]=4 [rfir_ir]=4
+  [rfir_appcommon]=5 [rfir_sim]=6 [rfir_eval]=6 [rfir_localize_core]=7
+  [rfir_mrpt_plugin]=8
+)
+# Known exceptions, each with its reason; an edge here is reported, not failed.
+declare -A KNOWN=(
+  # The emitter map reads its emitter file (textlog.md's map format) when MRPT
+  # creates it from an INI section; the map-file reader and the atomic writer
+  # still live in rfir_appcommon instead of a layer below rfir_ir.
+  ["rfir_ir -> rfir_appcommon"]=1
+)
+
+cmake -S "$ROOT" -B "$WORK/build" -DRFIR_BUILD_TESTS=OFF \
+  --graphviz="$WORK/rfir.dot" >"$WORK/configure.log" 2>&1 ||
+  { cat "$WORK/configure.log" >&2; echo "check_layers: configure failed" >&2; exit 1; }
+
+fail=0
+edges=0
+while read -r from to; do
+  [[ -n "${RANK[$from]:-}" && "$to" == rfir_* && "$to" != rfir_tclap ]] || continue
+  edges=$((edges + 1))
+  if [[ -z "${RANK[$to]:-}" ]]; then
+    echo "check_layers: $from links $to, which has no layer in scripts/check_layers.sh" >&2
+    fail=1
+  elif ((RANK[$to] >= RANK[$from])); then
+    if [[ -n "${KNOWN["$from -> $to"]:-}" ]]; then
+      echo "check_layers: known exception: $from -> $to"
+    else
+      echo "check_layers: $from (layer ${RANK[$from]}) links $to (layer ${RANK[$to]})" >&2
+      fail=1
+    fi
+  fi
+done < <(sed -n 's|.*// \([^ ]*\) -> \([^ ]*\)$|\1 \2|p' "$WORK/rfir.dot")
+
+for lib in "${!RANK[@]}"; do
+  grep -q "label = \"$lib[\\\"]" "$WORK/rfir.dot" ||
+    { echo "check_layers: library $lib is not in the build graph" >&2; fail=1; }
+done
+if grep -rlE '^\s*(rfir_)?add_library\(' "$ROOT"/apps --include=CMakeLists.txt; then
+  echo "check_layers: the program folders above declare a library" >&2
+  fail=1
+fi
+if grep -rnE 'include_directories\([^)]*apps/' "$ROOT"/mrpt_plugins "$ROOT"/observations \
+    --include=CMakeLists.txt; then
+  echo "check_layers: a library includes a program folder" >&2
+  fail=1
+fi
+((fail == 0)) && echo "check_layers: $edges edges between the libraries, all downwards"
+exit $fail

@@ -148,7 +148,10 @@ TEST(SimConfig, StockInisLoadAndRun) {
         ASSERT_NO_THROW(c = loadSimConfig(f.path().string()));
         c.maxDuration = 3;
         const auto out = rfir::sim::simulate(c, 1);
-        EXPECT_EQ(out.steps.size(), size_t(3 / c.dt + 1e-9) + 1);
+        if (c.asyncTiming())  // event-driven: at least every dt step
+            EXPECT_GE(out.steps.size(), size_t(3 / c.dt + 1e-9) + 1);
+        else
+            EXPECT_EQ(out.steps.size(), size_t(3 / c.dt + 1e-9) + 1);
         EXPECT_FALSE(out.gtMap.empty());
         n++;
     }

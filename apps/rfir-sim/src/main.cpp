@@ -17,8 +17,10 @@ const char* kDescription =
     "receivers under a ceiling emitter lattice and/or a range-and-bearing sensor, as "
     "configured by an INI file (config_ini/sim_*.ini). Writes DIR/NAME.rawlog, "
     "DIR/NAME.gt.tum (true robot path), DIR/NAME.gt_map.txt (true tags, emitters, "
-    "landmarks) and, when the trajectory has marked spots, DIR/NAME.spots.tum. The same "
-    "INI and seed give byte-identical files.";
+    "landmarks) and, when the trajectory has marked spots, DIR/NAME.spots.tum; with "
+    "faults (docs/simulator.md) DIR/NAME.gt_faults.txt, with moved IR emitters "
+    "DIR/NAME.map.txt (the map for the localizer). The same INI and seed give "
+    "byte-identical files.";
 
 int run(const std::string& ini, const std::vector<std::string>& sets,
         const std::string& dir, uint64_t seed, std::string name, bool quiet) {

@@ -1,6 +1,7 @@
 /* rfir-sim: sensor models. */
 #include <rfir/models/range_bearing.h>
 #include <rfir/models/read_model.h>
+#include <rfir/obs/ir_codes.h>
 #include <rfir/obs/ir_decoder.h>
 #include <cstddef>  // ir_decoder.h uses size_t
 
@@ -8,11 +9,59 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace rfir::sim::detail {
+std::string faultNumber(double v) {
+    // The shortest of 15-17 digits that reads back as v: a record's time is
+    // then the log's time exactly.
+    for (int p = 15;; p++) {
+        std::ostringstream o;
+        o << std::setprecision(p) << v;
+        if (p == 17 || std::stod(o.str()) == v) return o.str();
+    }
+}
+
+namespace {
+bool deadAt(const TSimConfig& cfg, size_t reader, double elapsed) {
+    for (const auto& d : cfg.rfid.deadReaders)
+        if (d.reader == reader && elapsed >= d.from && elapsed < d.to) return true;
+    return false;
+}
+
+/** A ghost read: one real tag, not read by this reader now, whose centre lies
+ * within the configured distances of the reader's centre (world frame). */
+void addGhost(const TSimConfig& cfg, const TWorld& w, const mrpt::math::TPose2D& pose,
+              rfir::obs::CObservationRFIDReaders::TReading& rd, const TFaultContext& f) {
+    const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+    const double rx = pose.x + c * rd.reader.x - s * rd.reader.y;
+    const double ry = pose.y + s * rd.reader.x + c * rd.reader.y;
+    const double lo = cfg.rfid.ghostMinDistance, hi = cfg.rfid.ghostMaxDistance;
+    std::vector<size_t> near, cand;
+    w.tagsNear(rx, ry, hi, near);
+    std::sort(near.begin(), near.end());
+    for (size_t k : near) {
+        const double d = std::hypot(w.tags[k].x - rx, w.tags[k].y - ry);
+        if (d < lo || d > hi) continue;
+        if (std::find(rd.tags.begin(), rd.tags.end(), w.tags[k].id) != rd.tags.end())
+            continue;
+        cand.push_back(k);
+    }
+    // No tag at that distance (an empty corner): no ghost, and no record.
+    if (cand.empty()) return;
+    const auto& t = w.tags[cand[f.rng->drawUniform32bit() % cand.size()]];
+    rd.tags.push_back(t.id);
+    f.log->push_back("ghost " + faultNumber(f.t) + " " + rd.reader.id + " " + t.id + " " +
+                     faultNumber(std::hypot(t.x - rx, t.y - ry)));
+}
+}  // namespace
+
 rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
                                                   const mrpt::poses::CPose2D& robot,
-                                                  rfir::sim::TSimRandom& rng) {
+                                                  rfir::sim::TSimRandom& rng,
+                                                  const std::vector<size_t>& which,
+                                                  const TFaultContext& f) {
     auto o = rfir::obs::CObservationRFIDReaders::Create();
     o->sensorLabel = "RFID";
     double reach = 0;
@@ -23,10 +72,15 @@ rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const T
     std::sort(near.begin(), near.end());
     const mrpt::math::TPose2D pose = robot.asTPose();
     const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-    for (const auto& r : cfg.readers) {
+    for (size_t i = 0; i < cfg.readers.size(); i++) {
+        if (!which.empty() && std::find(which.begin(), which.end(), i) == which.end())
+            continue;
+        const auto& r = cfg.readers[i];
         rfir::obs::CObservationRFIDReaders::TReading rd;
         rd.reader = r;
+        const bool dead = deadAt(cfg, i, f.elapsed);
         for (size_t k : near) {
+            if (dead) break;  // polled, answers nothing
             // The likelihood's read model (SPEC 2: e), read inside its rectangle.
             const auto e =
                 rfir::models::readModel(pose, c, s, r.x, r.y, {w.tags[k].x, w.tags[k].y});
@@ -37,8 +91,14 @@ rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const T
                 continue;
             rd.tags.push_back(w.tags[k].id);
         }
+        if (!dead && cfg.rfid.ghostRate > 0 &&
+            f.rng->drawUniform(0.0, 1.0) < cfg.rfid.ghostRate)
+            addGhost(cfg, w, pose, rd, f);
+        if (rd.tags.empty() && !cfg.rfid.writeEmptyPolls) continue;
         o->readings.push_back(rd);
     }
+    // A text log has no record for "polled, nothing written".
+    if (o->readings.empty()) return nullptr;
     return o;
 }
 
@@ -51,9 +111,50 @@ double modelVoltage(const TIRConfig& ir, double d, double h) {
     return curve.expected(d, h);
 }
 
+namespace {
+/** Wrong codes (another emitter's ID, or one code misread) and voltage
+ * outliers on a reading of an emitter in view. */
+void applyIRFaults(const TIRConfig& ir, const TWorld& w,
+                   rfir::obs::CObservationIRSignals::TReading& rd,
+                   const TFaultContext& f) {
+    auto& rng = *f.rng;
+    const std::string at = faultNumber(f.t) + " " + rd.receiver.id + " ";
+    if (ir.wrongCodeRate > 0 && rng.drawUniform(0.0, 1.0) < ir.wrongCodeRate) {
+        const auto truth = rd.codes;
+        std::vector<size_t> others;
+        for (size_t j = 0; j < w.emitters.size(); j++)
+            if (w.emitters[j].codes != truth) others.push_back(j);
+        std::vector<uint8_t> free;
+        for (uint8_t c = 1; c <= 9; c++)
+            if (std::find(truth.begin(), truth.end(), c) == truth.end())
+                free.push_back(c);
+        // Another emitter's ID, or one code misread; whichever exists when
+        // the other cannot (one ID only, or all nine codes sent).
+        const bool other = rng.drawUniform(0.0, 1.0) < ir.wrongCodeOtherId;
+        if (!others.empty() && (other || free.empty()))
+            rd.codes = w.emitters[others[rng.drawUniform32bit() % others.size()]].codes;
+        else if (!free.empty()) {
+            rd.codes[rng.drawUniform32bit() % rd.codes.size()] =
+                free[rng.drawUniform32bit() % free.size()];
+            std::sort(rd.codes.begin(), rd.codes.end());
+        }
+        if (rd.codes != truth)  // else nothing else to spell
+            f.log->push_back("wrong_code " + at + rfir::ir::emitterIdFromCodes(truth) +
+                             " " + rfir::ir::emitterIdFromCodes(rd.codes));
+    }
+    if (ir.voltOutlierRate > 0 && rng.drawUniform(0.0, 1.0) < ir.voltOutlierRate) {
+        const double v = rng.drawUniform(0.0, ir.voltOutlierMax);
+        f.log->push_back("volt_outlier " + at + faultNumber(rd.volts) + " " +
+                         faultNumber(v));
+        rd.volts = v;
+    }
+}
+}  // namespace
+
 rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
                                               const mrpt::poses::CPose2D& robot,
-                                              rfir::sim::TSimRandom& rng) {
+                                              rfir::sim::TSimRandom& rng,
+                                              const TFaultContext& f) {
     const auto& ir = cfg.ir;
     auto o = rfir::obs::CObservationIRSignals::Create();
     o->sensorLabel = "IR";
@@ -79,6 +180,7 @@ rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorl
             rd.codes = e.codes;
             rd.volts =
                 modelVoltage(ir, bestD, e.z - rx.z) + rng.drawGaussian1D(0, ir.voltSigma);
+            if (f.rng) applyIRFaults(ir, w, rd, f);
         }
         if (ir.output == TIRConfig::Output::Raw) {
             std::vector<double> phases(rd.codes.size());

@@ -139,8 +139,12 @@ void loadRFID(const CIniSection& s, TRFIDConfig& r) {
 }
 }  // namespace
 
-// IR and range-and-bearing sections live in sim_config_ir.cpp.
+// IR and range-and-bearing sections live in sim_config_ir.cpp, the fault keys
+// in sim_config_faults.cpp.
 void loadIRSection(const CIniSection& s, TIRConfig& ir);
+void loadOdometryFaults(const CIniSection& s, TOdometryNoise& o);
+void loadRFIDFaults(const CIniSection& s, TRFIDConfig& r);
+void loadIRFaults(const CIniSection& s, TIRConfig& ir);
 void loadRBSection(const CIniSection& s, TSimConfig& c);
 
 void TSimConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
@@ -161,22 +165,46 @@ void TSimConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
         CIniSection(cfg, p + "kidnap",
                     {"enabled", "time", "carry_time", "to_time", "to_pose", "odometry"}),
         kidnap);
-    loadOdometry(CIniSection(cfg, p + "odometry",
-                             {"k_xy", "k_phi_rot", "k_phi_xy", "scale_sigma",
-                              "rot_scale_sigma", "heading_drift_sigma"}),
-                 odometry);
-    loadRFID(CIniSection(cfg, p + "rfid",
+    const CIniSection odo(
+        cfg, p + "odometry",
+        {"k_xy", "k_phi_rot", "k_phi_xy", "scale_sigma", "rot_scale_sigma",
+         "heading_drift_sigma", "scale_error", "rot_scale_error", "heading_drift_error",
+         "rate", "latency", "slip_times", "slip_count", "slip_size", "slip_heading_deg"});
+    loadOdometry(odo, odometry);
+    loadOdometryFaults(odo, odometry);
+    const CIniSection rf(cfg, p + "rfid",
                          {"enabled", "density", "placement_sigma", "miss_probability",
-                          "uid_prefix"}),
-             rfid);
-    loadIRSection(
-        CIniSection(
-            cfg, p + "ir",
-            {"enabled", "pitch", "ceiling_height", "height_spread", "reference_height",
-             "repeated_codes", "unique_codes_per_id", "with_repeated", "with_unique",
-             "all_unique", "visible_radius", "volt_sigma", "output", "rate_hz", "samples",
-             "raw_noise_sigma", "raw_offset", "period", "failed"}),
-        ir);
+                          "uid_prefix", "ghost_rate", "ghost_distance", "dead_readers",
+                          "empty_polls", "polling", "poll_rate", "poll_jitter"});
+    loadRFID(rf, rfid);
+    loadRFIDFaults(rf, rfid);
+    const CIniSection irs(cfg, p + "ir",
+                          {"enabled",
+                           "pitch",
+                           "ceiling_height",
+                           "height_spread",
+                           "reference_height",
+                           "repeated_codes",
+                           "unique_codes_per_id",
+                           "with_repeated",
+                           "with_unique",
+                           "all_unique",
+                           "visible_radius",
+                           "volt_sigma",
+                           "output",
+                           "rate_hz",
+                           "samples",
+                           "raw_noise_sigma",
+                           "raw_offset",
+                           "period",
+                           "failed",
+                           "moved",
+                           "wrong_code_rate",
+                           "wrong_code_other_id",
+                           "volt_outlier_rate",
+                           "volt_outlier_max"});
+    loadIRSection(irs, ir);
+    loadIRFaults(irs, ir);
     loadRBSection(CIniSection(cfg, p + "range_bearing",
                               {"enabled", "density", "sensor_pose", "max_range",
                                "fov_deg", "sigma_range", "sigma_bearing_deg"}),

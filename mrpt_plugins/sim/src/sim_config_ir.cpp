@@ -82,6 +82,9 @@ void loadRBSection(const CIniSection& s, TSimConfig& c) {
     c.rb.sigmaBearing = mrpt::DEG2RAD(sb);
 }
 
+void validateFaults(const TSimConfig& c);
+void dumpFaults(const TSimConfig& c, std::ostream& o);
+
 void TSimConfig::validate() const {
     auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
     if (!(dt > 0)) bad("[simulation] dt must be > 0");
@@ -100,6 +103,7 @@ void TSimConfig::validate() const {
         bad("[kidnap] time and [kidnap] to_time: to_time must be earlier than time");
     if (!rfid.enabled && !ir.enabled && !rb.enabled)
         bad("[rfid] enabled, [ir] enabled, [range_bearing] enabled: no sensor enabled");
+    validateFaults(*this);
 }
 
 void TSimConfig::dumpToTextStream(std::ostream& o) const {
@@ -139,6 +143,7 @@ void TSimConfig::dumpToTextStream(std::ostream& o) const {
     o << "[range_bearing] enabled=" << rb.enabled << " density=" << rb.density
       << " max_range=" << rbSensor.maxRange << " fov_deg=" << mrpt::RAD2DEG(rbSensor.fov)
       << "\n";
+    dumpFaults(*this, o);
 }
 
 }  // namespace rfir::sim

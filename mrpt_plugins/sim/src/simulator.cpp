@@ -4,12 +4,12 @@
 #include <rfir/common/rawlog_io.h>
 #include <rfir/sim/simulator.h>
 
-#include "odometry.h"
-#include "trajectory.h"
-#include "world.h"
+#include "sim_run.h"
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -19,69 +19,6 @@ using namespace detail;
 using mrpt::poses::CPose2D;
 
 namespace {
-/** Maps real time to the plan, with the kidnapping: before `ts` the plan is
- * followed; during the carry the robot moves from plan(ts) to the target; after
- * `te` it follows K (+) plan(t - te + s0). wheels(t) is the pose its wheels
- * would have integrated (they stop while carried). */
-class CTimeline {
-  public:
-    CTimeline(const TSimConfig& cfg, const CPlan& plan) : plan_(plan) {
-        const auto& k = cfg.kidnap;
-        end_ = plan.duration();
-        if (!k.enabled) return;
-        if (k.time >= plan.duration())
-            throw std::invalid_argument(
-                "[kidnap] time is after the end of the trajectory (" +
-                std::to_string(plan.duration()) + " s)");
-        on_ = true;
-        ts_ = k.time, te_ = k.time + k.carryTime;
-        s0_ = k.toTime >= 0 ? k.toTime : k.time;
-        const CPose2D target =
-            k.toTime >= 0 ? plan.at(s0_) : CPose2D(k.toX, k.toY, k.toPhi);
-        K_ = target + (CPose2D() - plan.at(s0_));
-        lift_ = plan.at(ts_);
-        end_ = te_ + plan.duration() - s0_;
-    }
-    double end() const { return end_; }
-    bool carried(double t) const { return on_ && t >= ts_ && t < te_; }
-    CPose2D truePose(double t) const {
-        if (!on_ || t < ts_) return plan_.at(t);
-        if (t >= te_) return K_ + plan_.at(t - te_ + s0_);
-        const CPose2D to = K_ + plan_.at(s0_);
-        const double f = te_ > ts_ ? (t - ts_) / (te_ - ts_) : 1.0;
-        const double dphi = std::atan2(std::sin(to.phi() - lift_.phi()),
-                                       std::cos(to.phi() - lift_.phi()));
-        return {lift_.x() + f * (to.x() - lift_.x()),
-                lift_.y() + f * (to.y() - lift_.y()), lift_.phi() + f * dphi};
-    }
-    CPose2D wheels(double t) const {
-        if (!on_ || t < ts_) return plan_.at(t);
-        if (t < te_) return lift_;
-        return lift_ + (CPose2D() - plan_.at(s0_)) + plan_.at(t - te_ + s0_);
-    }
-    /** Real times at which the robot stands at plan time `s`. */
-    std::vector<double> realTimes(double s) const {
-        std::vector<double> v;
-        if (!on_ || s < ts_) v.push_back(s);
-        if (on_ && s >= s0_) v.push_back(s - s0_ + te_);
-        return v;
-    }
-
-  private:
-    const CPlan& plan_;
-    bool on_ = false;
-    double ts_ = 0, te_ = 0, s0_ = 0, end_ = 0;
-    CPose2D K_, lift_;
-};
-
-/** CPose2D wraps headings into [-pi, pi); textlog angles are in (-pi, pi]:
- * a heading of exactly -pi (a start facing -x) is stored as pi, the value the
- * import of its text gives. */
-CPose2D textPose(CPose2D p) {
-    if (p.phi() == -M_PI) p.phi(M_PI);
-    return p;
-}
-
 rfir::common::TMapFile groundTruthMap(const TWorld& w) {
     using K = rfir::common::TMapEntry::Kind;
     rfir::common::TMapFile m;
@@ -116,11 +53,101 @@ void numberLandmarks(const TWorld& w, TSimOutput& out) {
 }
 }  // namespace
 
+namespace {
+/** One step per dt: odometry and every sensor at the same instants. */
+void runSteps(TSimRun& run, TSimOutput& out) {
+    const auto& cfg = run.cfg;
+    const auto& tl = run.tl;
+    out.steps.reserve(run.n);
+    CPose2D odom = tl.truePose(0), prevWheels = tl.wheels(0);
+    long lastIR = -1;
+    for (size_t k = 0; k < run.n; k++) {
+        TSimStep s;
+        const double e = k * cfg.dt;  // elapsed; the clock reads startTime + e
+        s.t = cfg.startTime + e;
+        s.truePose = tl.truePose(e);
+        const CPose2D wheels = tl.wheels(e);
+        if (k > 0) {
+            const CPose2D inc = wheels - prevWheels;
+            odom = odom +
+                   run.slips.apply(e, s.t, inc, run.odo.noisyIncrement(inc), out.faults);
+        }
+        prevWheels = wheels;
+        const bool carried = tl.carried(e);
+        if (!carried || cfg.kidnap.odometry == TKidnapConfig::Odometry::Frozen)
+            s.odometry = textPose(odom);
+        if (!carried) {
+            const TFaultContext f{&run.fault, &out.faults, e, s.t};
+            if (cfg.rfid.enabled)
+                if (auto o = senseRFID(cfg, run.world, s.truePose, run.rfid, {}, f))
+                    s.obs.push_back(o);
+            const long irSlot = long(std::floor(e / cfg.ir.period + 1e-9));
+            if (cfg.ir.enabled && irSlot != lastIR) {
+                // nullptr: no receiver saw anything (decoded output).
+                if (auto o = senseIR(cfg, run.world, s.truePose, run.ir, f))
+                    s.obs.push_back(o);
+                lastIR = irSlot;
+            }
+            if (cfg.rb.enabled)
+                if (auto o = senseRB(cfg, run.world, s.truePose, run.rb))
+                    s.obs.push_back(o);
+        }
+        out.groundTruth.push_back({s.t, s.truePose});
+        out.steps.push_back(std::move(s));
+    }
+}
+
+/** A position in a record, at the map files' precision (1 um). */
+std::string coord(double v) {
+    std::ostringstream o;
+    o << std::setprecision(9) << std::round(v * 1e6) / 1e6;
+    return o.str();
+}
+
+/** The faults that are not events (dead readers, emitters, biases) head the
+ * ground-truth record list; the localizer's map gets the moved emitters. */
+void recordStaticFaults(const TSimConfig& cfg, const TWorld& w, TSimOutput& out) {
+    std::vector<std::string> head;
+    head.push_back("odometry_bias " + faultNumber(out.scaleBias) + " " +
+                   faultNumber(out.rotScaleBias) + " " + faultNumber(out.headingDrift));
+    if (cfg.rfid.enabled)
+        for (const auto& d : cfg.rfid.deadReaders)
+            head.push_back("dead_reader " + cfg.readers[d.reader].id + " " +
+                           faultNumber(cfg.startTime + d.from) + " " +
+                           faultNumber(cfg.startTime + d.to));
+    for (size_t i = 0; i < w.emitters.size(); i++)
+        if (w.emitterFailed[i])
+            head.push_back("failed_emitter " + w.emitters[i].id + " " +
+                           coord(w.emitters[i].x) + " " + coord(w.emitters[i].y));
+    if (cfg.ir.enabled && !cfg.ir.moved.empty()) {
+        out.localizerMap = out.gtMap;
+        for (const auto& m : cfg.ir.moved) {
+            bool found = false;
+            for (auto& e : out.localizerMap)
+                if (e.kind == rfir::common::TMapEntry::Kind::Emitter &&
+                    std::hypot(e.x - m.x, e.y - m.y) < 0.05) {
+                    head.push_back("moved_emitter " + e.id + " " + coord(e.x) + " " +
+                                   coord(e.y) + " " + coord(e.x + m.dx) + " " +
+                                   coord(e.y + m.dy));
+                    e.x += m.dx, e.y += m.dy, found = true;
+                }
+            if (!found)
+                throw std::invalid_argument("[ir] moved: no emitter at '" + coord(m.x) +
+                                            " " + coord(m.y) + "' in the lattice");
+        }
+    }
+    out.faults.insert(out.faults.begin(), head.begin(), head.end());
+}
+}  // namespace
+
 TSimOutput simulate(const TSimConfig& cfg, uint64_t seed) {
     cfg.validate();
     rfir::sim::TSimRandom rngPath(streamSeed(seed, 4)), rngOdo(streamSeed(seed, 5)),
         rngRFID(streamSeed(seed, 6)), rngIR(streamSeed(seed, 7)),
         rngRB(streamSeed(seed, 8));
+    // The faults' own streams: the clean streams above draw the same numbers
+    // whether faults are on or not.
+    rfir::sim::TSimRandom rngFault(streamSeed(seed, 9)), rngTiming(streamSeed(seed, 10));
     const CPlan plan(cfg, rngPath);
     const CTimeline tl(cfg, plan);
     const TWorld world = buildWorld(cfg, seed);
@@ -149,35 +176,25 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed) {
     double end = tl.end();
     if (cfg.maxDuration > 0) end = std::min(end, cfg.maxDuration);
     const size_t n = size_t(std::floor(end / cfg.dt + 1e-9)) + 1;
-    out.steps.reserve(n);
-    CPose2D odom = tl.truePose(0), prevWheels = tl.wheels(0);
-    long lastIR = -1;
-    for (size_t k = 0; k < n; k++) {
-        TSimStep s;
-        const double e = k * cfg.dt;  // elapsed; the clock reads startTime + e
-        s.t = cfg.startTime + e;
-        s.truePose = tl.truePose(e);
-        const CPose2D wheels = tl.wheels(e);
-        if (k > 0) odom = odom + odo.noisyIncrement(wheels - prevWheels);
-        prevWheels = wheels;
-        const bool carried = tl.carried(e);
-        if (!carried || cfg.kidnap.odometry == TKidnapConfig::Odometry::Frozen)
-            s.odometry = textPose(odom);
-        if (!carried) {
-            if (cfg.rfid.enabled)
-                s.obs.push_back(senseRFID(cfg, world, s.truePose, rngRFID));
-            const long irSlot = long(std::floor(e / cfg.ir.period + 1e-9));
-            if (cfg.ir.enabled && irSlot != lastIR) {
-                // nullptr: no receiver saw anything (decoded output).
-                if (auto o = senseIR(cfg, world, s.truePose, rngIR)) s.obs.push_back(o);
-                lastIR = irSlot;
-            }
-            if (cfg.rb.enabled)
-                if (auto o = senseRB(cfg, world, s.truePose, rngRB)) s.obs.push_back(o);
-        }
-        out.groundTruth.push_back({s.t, s.truePose});
-        out.steps.push_back(std::move(s));
-    }
+    CSlipSchedule slips(cfg.odometry, end, rngFault);
+    TSimRun run{cfg,
+                tl,
+                world,
+                odo,
+                slips,
+                rngRFID,
+                rngIR,
+                rngRB,
+                rngFault,
+                rngTiming,
+                (n - 1) * cfg.dt,
+                n};
+    if (cfg.asyncTiming())
+        runEvents(run, out);
+    else
+        runSteps(run, out);
+    out.hasFaults = cfg.hasFaults();
+    if (out.hasFaults) recordStaticFaults(cfg, world, out);
     if (cfg.rb.enabled) numberLandmarks(world, out);
     for (double sp : plan.spotTimes())
         for (double t : tl.realTimes(sp))
@@ -187,13 +204,26 @@ TSimOutput simulate(const TSimConfig& cfg, uint64_t seed) {
     return out;
 }
 
+namespace {
+void writeFaultRecords(const std::string& path, const TSimOutput& out,
+                       const std::string& name) {
+    std::ofstream f(path);
+    f << "# faults injected into simulated run " << name
+      << " (docs/simulator.md, \"Faults\"); times are the log's clock\n";
+    for (const auto& r : out.faults) f << r << "\n";
+    f.flush();
+    if (!f) throw std::runtime_error(path + ": cannot write the fault records");
+}
+}  // namespace
+
 void writeOutputs(const TSimOutput& out, const std::string& dir, const std::string& name,
                   std::ostream* progress) {
     const std::string base = dir + "/" + name;
     // The set is staged and renamed in whole: an earlier run's files of this
     // name (e.g. its .spots.tum) do not stay beside the new ones.
-    rfir::common::COutputFiles set(dir, {name + ".rawlog", name + ".gt.tum",
-                                         name + ".gt_map.txt", name + ".spots.tum"});
+    rfir::common::COutputFiles set(
+        dir, {name + ".rawlog", name + ".gt.tum", name + ".gt_map.txt",
+              name + ".spots.tum", name + ".gt_faults.txt", name + ".map.txt"});
     {
         // A step with neither odometry nor observation (carried with
         // `odometry = stop`) is not written: an instant of a textlog has at
@@ -226,6 +256,12 @@ void writeOutputs(const TSimOutput& out, const std::string& dir, const std::stri
     rfir::common::saveMapFile(set.file(name + ".gt_map.txt"), out.gtMap, comment);
     if (!out.spots.empty())
         rfir::common::saveTUM(set.file(name + ".spots.tum"), out.spots);
+    if (out.hasFaults) writeFaultRecords(set.file(name + ".gt_faults.txt"), out, name);
+    if (!out.localizerMap.empty())
+        rfir::common::saveMapFile(set.file(name + ".map.txt"), out.localizerMap,
+                                  "map given to the localizer of simulated run " + name +
+                                      " (moved emitters: see " + name +
+                                      ".gt_faults.txt)");
     set.commit();
 }
 

@@ -42,17 +42,32 @@ struct TWorld {
  * each from its own generator so that enabling one does not move another. */
 TWorld buildWorld(const TSimConfig& cfg, uint64_t seed);
 
-/** One RFID poll: every reader, with the tags inside its square (SPEC 2, the
- * step model), each missed with cfg.rfid.missProbability. */
+/** Where the faults of one sensing instant go: their own generator (so that
+ * the clean streams draw the same numbers with faults on or off) and the
+ * ground-truth records (TSimOutput::faults). */
+struct TFaultContext {
+    rfir::sim::TSimRandom* rng = nullptr;
+    std::vector<std::string>* log = nullptr;
+    double elapsed = 0;  //!< s from the start (dead-reader intervals)
+    double t = 0;        //!< clock time of the instant (the records)
+};
+
+/** One RFID poll of the readers `which` (empty: all), with the tags inside
+ * each square (SPEC 2, the step model), each missed with
+ * cfg.rfid.missProbability; plus the faults (dead readers, ghosts, empty
+ * polls omitted). nullptr when nothing is left to write. */
 rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
                                                   const mrpt::poses::CPose2D& robot,
-                                                  rfir::sim::TSimRandom& rng);
+                                                  rfir::sim::TSimRandom& rng,
+                                                  const std::vector<size_t>& which,
+                                                  const TFaultContext& f);
 
 /** One IR reading per receiver (thesis eq. 5.3 plus noise; raw window if so
- * configured). */
+ * configured), with the wrong-code and voltage-outlier faults. */
 rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorld& w,
                                               const mrpt::poses::CPose2D& robot,
-                                              rfir::sim::TSimRandom& rng);
+                                              rfir::sim::TSimRandom& rng,
+                                              const TFaultContext& f);
 
 /** Range and bearing of every landmark in range and field of view (SPEC 7). */
 mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
@@ -63,6 +78,10 @@ mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TW
  * distance h: eq. 5.3 scaled by (referenceHeight / h)^2 (inverse-square law;
  * the seed fitted it at 1.2 m only). */
 double modelVoltage(const TIRConfig& ir, double d, double h);
+
+/** A number of a ground-truth fault record (the shortest of 15-17
+ * significant digits that reads back exactly). */
+std::string faultNumber(double v);
 
 /** Deterministic per-purpose generator seed derived from the run seed. */
 uint32_t streamSeed(uint64_t seed, uint64_t stream);

@@ -13,7 +13,9 @@
  *   out.groundTruth;  out.gtMap;  out.header;
  *
  * Step k is at t = cfg.startTime + k cfg.dt (startTime = 1 s: MRPT takes a zero
- * timestamp as invalid); out.groundTruth[k] is the true pose of out.steps[k].
+ * timestamp as invalid) unless cfg.asyncTiming() (an odometry rate or latency,
+ * round-robin polls: steps at every event); out.groundTruth[k] is the true pose
+ * of out.steps[k]. Faults (off by default): out.faults, docs/simulator.md.
  *
  * or from a stock INI:
  *   auto cfg = rfir::sim::loadSimConfig(RFIR_SOURCE_DIR
@@ -95,6 +97,20 @@ struct TOdometryNoise {
     double scaleSigma = 0.01;          //!< translation scale bias (fraction)
     double rotScaleSigma = 0.01;       //!< rotation scale bias (fraction)
     double headingDriftSigma = 0.005;  //!< rad per metre travelled
+    /** Fixed systematic errors, added to the drawn biases s, r, h (faults;
+     * 0 by default): a known miscalibration rather than a random one. */
+    double scaleError = 0, rotScaleError = 0, headingDriftError = 0;
+
+    // Timing (faults; off by default). With rate > 0 or latency > 0 the run
+    // is event-driven (docs/simulator.md, "Faults").
+    double rate = 0;     //!< odometry records per second (0: one per dt step)
+    double latency = 0;  //!< a record at t reports the wheels' pose at t - latency
+    /** Wheel slips: at each time (s from the start) the odometry interval
+     * containing it gains an extra translation of slipSize along the motion
+     * (robot frame) and slipHeading rad; slipCount more at random times. */
+    std::vector<double> slipTimes;
+    int slipCount = 0;
+    double slipSize = 0.05, slipHeading = 0;
 
     /** Every noise parameter times k (the odometry sweeps). */
     void scale(double k) {
@@ -112,6 +128,25 @@ struct TRFIDConfig {
     double placementSigma = 0.005;
     double missProbability = 0;          //!< a tag inside a square is missed with it
     std::string uidPrefix = "E0040150";  //!< + 8 random hex digits per tag
+
+    // Faults, off by default (docs/simulator.md, "Faults").
+    /** Per reader poll: the probability that the reader also reports one real
+     * tag whose centre lies ghostMinDistance..ghostMaxDistance from its centre. */
+    double ghostRate = 0;
+    double ghostMinDistance = 0.2, ghostMaxDistance = 0.6;
+    struct TDeadInterval {
+        size_t reader = 0;        //!< index into TSimConfig::readers
+        double from = 0, to = 0;  //!< s from the start; reads nothing in [from, to)
+    };
+    std::vector<TDeadInterval> deadReaders;
+    bool writeEmptyPolls = true;  //!< false: a reader that read nothing is not written
+    enum class Polling {
+        Together,   //!< every reader at every dt step
+        RoundRobin  //!< one reader per poll, each pollRate times a second
+    };
+    Polling polling = Polling::Together;
+    double pollRate = 5;    //!< Hz per reader (round robin)
+    double pollJitter = 0;  //!< uniform +- jitter on each poll time (s)
 };
 
 /** Ceiling emitters and receivers ([ir] section); thesis chapter 5. */
@@ -137,6 +172,20 @@ struct TIRConfig {
     /** Failed emitters: an ID (all emitters with it) or "x y" (the emitter
      * there), one per entry. */
     std::vector<std::string> failed;
+
+    // Faults, off by default (docs/simulator.md, "Faults").
+    /** Moved emitters: the emitter at (x, y) is written at (x + dx, y + dy)
+     * in NAME.map.txt, the map given to the localizer; the truth keeps it. */
+    struct TMovedEmitter {
+        double x = 0, y = 0, dx = 0, dy = 0;
+    };
+    std::vector<TMovedEmitter> moved;
+    double wrongCodeRate = 0;  //!< per reading in view: the codes are wrong
+    double wrongCodeOtherId =
+        0.5;  //!< of those, the fraction spelling another emitter's ID
+    double voltOutlierRate =
+        0;  //!< per reading in view: V uniform in [0, voltOutlierMax]
+    double voltOutlierMax = 4;
 };
 
 /** Range-and-bearing sensor and landmarks ([range_bearing] section), SPEC 7. */
@@ -183,6 +232,10 @@ struct TSimConfig : public mrpt::config::CLoadableOptions {
     void dumpToTextStream(std::ostream& out) const override;
     /** Throws std::invalid_argument naming the parameter if inconsistent. */
     void validate() const;
+    /** Is any fault of docs/simulator.md's "Faults" on? */
+    bool hasFaults() const;
+    /** Event-driven timing (odometry rate or latency, round-robin polls)? */
+    bool asyncTiming() const;
 };
 
 /** Loads an INI (every section of the file must be one of ours), then applies
@@ -219,13 +272,23 @@ struct TSimOutput {
     std::vector<std::string> failedEmitters;
     /** Per-run odometry biases drawn from the noise model (s, r, h). */
     double scaleBias = 0, rotScaleBias = 0, headingDrift = 0;
+    /** The faults injected, one record per line of NAME.gt_faults.txt
+     * (docs/simulator.md): "ghost t reader tag distance", "slip t dx dy dphi",
+     * "dead_reader reader from to", "wrong_code t receiver true written",
+     * "volt_outlier t receiver true written", "moved_emitter id x y map_x map_y",
+     * "failed_emitter id x y", "odometry_bias s r h". Empty without faults. */
+    std::vector<std::string> faults;
+    bool hasFaults = false;
+    /** With moved emitters: the map the localizer is given (NAME.map.txt). */
+    rfir::common::TMapFile localizerMap;
 };
 
 /** Runs the simulation; deterministic in (cfg, seed). */
 TSimOutput simulate(const TSimConfig& cfg, uint64_t seed);
 
 /** Writes DIR/NAME.rawlog, NAME.gt.tum, NAME.gt_map.txt and, when there are
- * spots, NAME.spots.tum (each file whole or not at all); progress lines go to
+ * spots, NAME.spots.tum, with faults NAME.gt_faults.txt, with moved emitters
+ * NAME.map.txt (each file whole or not at all); progress lines go to
  * `progress` if given. */
 void writeOutputs(const TSimOutput& out, const std::string& outDir,
                   const std::string& name, std::ostream* progress = nullptr);

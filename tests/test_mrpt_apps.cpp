@@ -49,11 +49,19 @@ void copyIni(const std::string& name, const std::string& to) {
     std::ofstream(to) << s;
 }
 
+/** The LD_PRELOAD list: the plugin, after the sanitizer runtimes in the
+ * sanitizer build (scripts/sanitize.sh), which MRPT's uninstrumented programs
+ * need loaded first to load the instrumented plugin. */
+std::string preloadList() {
+    const char* san = std::getenv("RFIR_SANITIZER_PRELOAD");
+    return san && *san ? std::string(san) + ":" + kPlugin : kPlugin;
+}
+
 /** Runs `exe ini rawlog` in `dir` with the plugin preloaded; its exit code. */
 int runApp(const std::string& exe, const TmpDir& dir, const std::string& ini) {
-    const std::string cmd = "cd " + dir.p.string() + " && LD_PRELOAD=" + kPlugin + " " +
-                            exe + " " + ini + " " + kRawlog + " < /dev/null > " + exe +
-                            ".log 2>&1";
+    const std::string cmd = "cd " + dir.p.string() + " && LD_PRELOAD='" + preloadList() +
+                            "' " + exe + " " + ini + " " + kRawlog + " < /dev/null > " +
+                            exe + ".log 2>&1";
     return std::system(cmd.c_str());
 }
 

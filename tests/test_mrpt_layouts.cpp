@@ -262,8 +262,13 @@ TEST(MrptLayouts, RawlogCutByRawlogEditStartsAtItsFirstOdometry) {
     TmpDir d;
     const auto in = kData + "rfid_60mm_16tags_loop.rawlog", cut = d / "cut.rawlog";
     // Entries 0 and 1 are the header pair: from entry 400 on, the 200th instant.
-    const std::string edit = "rawlog-edit -p " + kPlugin + " --cut --from-index 400 -i " +
-                             in + " -o " + cut + " > " + (d / "edit.log") + " 2>&1";
+    // In the sanitizer build MRPT's uninstrumented rawlog-edit needs the
+    // sanitizer runtimes loaded first to load the instrumented plugin.
+    const char* san = std::getenv("RFIR_SANITIZER_PRELOAD");
+    const std::string env = san && *san ? "LD_PRELOAD='" + std::string(san) + "' " : "";
+    const std::string edit = env + "rawlog-edit -p " + kPlugin +
+                             " --cut --from-index 400 -i " + in + " -o " + cut + " > " +
+                             (d / "edit.log") + " 2>&1";
     ASSERT_EQ(std::system(edit.c_str()), 0) << slurp(d / "edit.log");
     CRawlogReader r(cut);
     EXPECT_FALSE(r.hasHeader());

@@ -46,6 +46,8 @@ endif()
 run("configure the downstream project" ${CMAKE_COMMAND}
   -S ${RFIR_SOURCE_DIR}/tests/downstream -B ${build} -DCMAKE_BUILD_TYPE=Release
   -DCMAKE_CXX_COMPILER=${CXX_COMPILER} ${launcher} -DCMAKE_PREFIX_PATH=${prefix}
+  # The same flags as this build (the sanitizer build's libraries need them).
+  "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${EXE_LINKER_FLAGS}"
   -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
 file(STRINGS ${build}/CMakeCache.txt rfir_dir REGEX "^rfir_DIR:")
 if(NOT rfir_dir STREQUAL "rfir_DIR:PATH=${prefix}/lib/cmake/rfir")

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <typeinfo>
 
 namespace rfir::common {
 namespace {
@@ -61,7 +62,14 @@ std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, std::vector<std::string
     TCLAP::CmdLineOutput* before = cmd.getOutput();
     cmd.setOutput(&out);
     const bool run = cmd.parse(int(av.size()), av.data());
-    cmd.setOutput(before);
+    // TCLAP frees its own default output only while setOutput was never
+    // called; once it was, putting that output back would leak it. It is a
+    // stateless StdOutput: free it, and use one that lives as long as the
+    // program.
+    static TCLAP::StdOutput stdOutput;
+    if (before != &stdOutput && typeid(*before) == typeid(TCLAP::StdOutput))
+        delete before;
+    cmd.setOutput(&stdOutput);
     if (run) return std::nullopt;
     return out.failed ? kUsageExitCode : 0;
 }

@@ -113,12 +113,13 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
                   cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
+        resetTimes_.clear();
         pose_ = start;
     }
     void step(const TSlamInput& in) override;
     mrpt::poses::CPose2D pose() const override { return pose_; }
     std::vector<TLandmarkOut> landmarks() const override;
-    size_t resets() const override { return kidnap_.resets(); }
+    const std::vector<double>& resetTimes() const override { return resetTimes_; }
 
   private:
     /** @name The stages executeOn runs between the motion and the weighing.
@@ -175,6 +176,8 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     size_t termsWidth_ = 0;      //!< their columns; 0: not reusable
     std::optional<mrpt::poses::CPose2D> predictedForInsert_;
     mrpt::poses::CPose2D pose_;
+    double t_ = 0;                    //!< this step's time
+    std::vector<double> resetTimes_;  //!< when sensor resetting fired
 };
 
 void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool literal) {
@@ -194,6 +197,7 @@ void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool lit
         return *predicted;
     };
     if (reset) {
+        resetTimes_.push_back(t_);
         const size_t M = pf_.m_particles.size();
         const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
         const auto poses =
@@ -223,6 +227,7 @@ void CTagMapEngine::resolveReads(bool reuseTerms) {
 void CTagMapEngine::step(const TSlamInput& in) {
     // The step, in order (issue 11's pipeline; 003 Algorithm 1, 004 Alg. 1):
     // 1. this step's observations and detections;
+    t_ = in.t;
     obs_.clear();
     dets_.clear();
     if (in.rfid) {

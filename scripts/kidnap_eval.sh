@@ -44,7 +44,7 @@ run() {  # ini seed tag [sim --set ...]
   [[ -f "$d/$ini.rawlog" ]] ||
     "$BIN/rfir-sim" --config "config_ini/$ini.ini" --out-dir "$d" --seed "$seed" -q "$@"
   for m in $methods; do
-    "$BIN/rfir-slam" --rawlog "$d/$ini.rawlog" --method "$m" --seed "$seed" \
+    "$BIN/rfir-slam" --rawlog "$d/$ini.rawlog" --config "config_ini/slam_$m.ini" --seed "$seed" \
       --out-dir "$d/$m" -q ${sets[@]+"${sets[@]}"}
   done
 }

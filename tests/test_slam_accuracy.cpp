@@ -161,7 +161,9 @@ TEST(SlamKidnap, PFResets) {
 // mm with MRPT's generator (mean 86.9) and 180.3 / 63.3 / 55.3 / 118.6 /
 // 88.9 / 34.9 mm with the run's own (mean 90.2): the same level, and seed 3
 // is one of the two seeds under the bound either way. Reaching it on every
-// seed is the kidnap detector's work (issue 12, item 3).
+// seed is the kidnap detector's work (issue 12, item 3). With the detector
+// on the weighing's own evidence (several tags, augmented-MCL drop) seed 3
+// gives 57.9 mm (one reset): still over the bound, so still disabled.
 TEST(SlamKidnap, DISABLED_PFRecoversWithin50mm) {
     const auto simCfg = kidnapSetup();
     const auto with =

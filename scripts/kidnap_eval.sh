@@ -8,6 +8,7 @@
 #   bash scripts/kidnap_eval.sh                      # 3 seeds, pf and ps
 #   bash scripts/kidnap_eval.sh --seeds 1 --methods pf --out-dir /tmp/k
 #   bash scripts/kidnap_eval.sh --set kidnap.enabled=false   # rfir-slam --set
+#   bash scripts/kidnap_eval.sh --slam-ini-dir /old/config_ini  # another build's INIs
 # Environment: RFIR_BIN (default ./build/bin).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,12 +17,14 @@ seeds=3
 methods="pf ps"
 out=""
 sets=()
+slamIni=config_ini
 while (($#)); do
   case "$1" in
     --seeds) seeds="$2"; shift 2 ;;
     --methods) methods="$2"; shift 2 ;;
     --out-dir) out="$2"; shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
+    --slam-ini-dir) slamIni="$2"; shift 2 ;;
     *) echo "kidnap_eval.sh: unknown option '$1'" >&2; exit 2 ;;
   esac
 done
@@ -33,7 +36,8 @@ done
 
 normal="bench_floor_30x20 sim_rfid_300mm_4tags_random sim_rfid_300mm_4tags_random_biased
   sim_rfid_300mm_rotation sim_rfid_60mm_16tags_loop sim_rfid_60mm_16tags_loop_biased
-  sim_rfid_60mm_16tags_random sim_rfid_60mm_100tags_loop sim_rfid_60mm_100tags_random"
+  sim_rfid_60mm_16tags_random sim_rfid_60mm_100tags_loop sim_rfid_60mm_100tags_random
+  sim_rb_rotation sim_rb_norotation"
 kidnap="sim_kidnap sim_kidnap_300mm"
 
 # One simulated log per INI and seed (and its unkidnapped twin), then each
@@ -44,7 +48,7 @@ run() {  # ini seed tag [sim --set ...]
   [[ -f "$d/$ini.rawlog" ]] ||
     "$BIN/rfir-sim" --config "config_ini/$ini.ini" --out-dir "$d" --seed "$seed" -q "$@"
   for m in $methods; do
-    "$BIN/rfir-slam" --rawlog "$d/$ini.rawlog" --config "config_ini/slam_$m.ini" --seed "$seed" \
+    "$BIN/rfir-slam" --rawlog "$d/$ini.rawlog" --config "$slamIni/slam_$m.ini" --seed "$seed" \
       --out-dir "$d/$m" -q ${sets[@]+"${sets[@]}"}
   done
 }

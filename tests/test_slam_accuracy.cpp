@@ -161,7 +161,9 @@ TEST(SlamKidnap, PFResets) {
 // mm with MRPT's generator (mean 86.9) and 180.3 / 63.3 / 55.3 / 118.6 /
 // 88.9 / 34.9 mm with the run's own (mean 90.2): the same level, and seed 3
 // is one of the two seeds under the bound either way. Reaching it on every
-// seed is the kidnap detector's work (issue 12, item 3).
+// seed is the kidnap detector's work (issue 12, item 3). With the detector
+// on the weighing's own evidence (several tags, augmented-MCL drop) seed 3
+// gives 57.9 mm (one reset): still over the bound, so still disabled.
 TEST(SlamKidnap, DISABLED_PFRecoversWithin50mm) {
     const auto simCfg = kidnapSetup();
     const auto with =
@@ -198,4 +200,71 @@ TEST(SlamKidnap, PFRecoversWithStockSettings) {
         EXPECT_GT(afterKidnap(nr, simCfg), 0.200) << "seed " << seed;
     }
     EXPECT_LE(mean(with), mean(normal));
+}
+
+namespace {
+rfir::sim::TSimConfig stockSim(const std::string& ini) {
+    return rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini);
+}
+}  // namespace
+
+// No kidnapping, no reset. Picked before the detector was tuned: with the
+// one-collapse detector (3 steps below collapse_loglik) rfir-sim + rfir-slam
+// on these stock INIs reset PF 2 / PS 2 times (60 mm loop, seed 1) and PF 2 /
+// PS 2 times (60 mm biased loop, seed 3), with nobody carrying the robot.
+TEST(SlamKidnap, NoResetOnNormalRuns) {
+    for (const auto& [ini, seed] : std::vector<std::pair<std::string, uint64_t>>{
+             {"sim_rfid_60mm_16tags_loop.ini", 1},
+             {"sim_rfid_60mm_16tags_loop_biased.ini", 3}}) {
+        const auto sim = rfir::sim::simulate(stockSim(ini), seed);
+        for (const char* m : {"pf", "ps"}) {
+            const auto r = runMethod(sim, stockConfig(m), seed);
+            std::printf("%s seed %d %s: %zu resets, robot %.1f mm\n", ini.c_str(),
+                        int(seed), m, r.run.resets, 1e3 * r.robot);
+            EXPECT_EQ(r.run.resets, 0u) << ini << " seed " << seed << " " << m;
+        }
+    }
+}
+
+// The stock kidnap INIs (60 mm and 300 mm): the first reset comes within 5 s
+// of the put-down, none before the kidnapping, and within 5 s of the
+// put-down the robot error stays under 2 x the same run's mean error (from
+// the put-down on) without the kidnapping, for 5 s.
+TEST(SlamKidnap, RecoversWithin5sOnStockInis) {
+    for (const char* ini : {"sim_kidnap.ini", "sim_kidnap_300mm.ini"}) {
+        const auto kc = stockSim(ini);
+        auto normalCfg = kc;
+        normalCfg.kidnap.enabled = false;
+        const double down = kc.kidnap.time + kc.kidnap.carryTime;
+        const uint64_t seed = 1;
+        const auto sim = rfir::sim::simulate(kc, seed);
+        const auto normalSim = rfir::sim::simulate(normalCfg, seed);
+        for (const char* m : {"pf", "ps"}) {
+            const auto r = runMethod(sim, stockConfig(m), seed);
+            const auto n = runMethod(normalSim, stockConfig(m), seed);
+            std::vector<double> after;
+            for (const auto& pe : n.robotErrors.perPose)
+                if (pe.t >= down) after.push_back(pe.dist);
+            const double level = 2 * mean(after);
+            double recovered = -1;  // first t after the put-down staying under level 5 s
+            const auto& pp = r.robotErrors.perPose;
+            for (size_t i = 0; i < pp.size() && recovered < 0; i++) {
+                if (pp[i].t < down) continue;
+                bool ok = true;
+                for (size_t j = i; j < pp.size() && pp[j].t <= pp[i].t + 5; j++)
+                    ok = ok && pp[j].dist < level;
+                if (ok) recovered = pp[i].t - down;
+            }
+            const auto& rt = r.run.resetTimes;
+            std::printf("%s %s: resets at", ini, m);
+            for (double t : rt) std::printf(" %.1f", t);
+            std::printf(" s; put down at %.1f s, recovered %.1f s after\n", down,
+                        recovered);
+            ASSERT_FALSE(rt.empty()) << ini << " " << m;
+            EXPECT_GE(rt.front(), kc.kidnap.time) << ini << " " << m;
+            EXPECT_LE(rt.front(), down + 5) << ini << " " << m;
+            EXPECT_GE(recovered, 0) << ini << " " << m;
+            EXPECT_LE(recovered, 5) << ini << " " << m;
+        }
+    }
 }

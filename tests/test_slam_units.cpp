@@ -178,12 +178,37 @@ TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
     }
     TKidnapOptions o;
     o.collapse_steps = 2;
+    o.min_tags = 2;
+    o.evidence_drop = 50;
     CKidnapMonitor m(o);
-    EXPECT_FALSE(m.update(-10.0));
+    auto step = [](double t, double ll, std::vector<std::string> ids) {
+        TStepEvidence e;
+        e.t = t;
+        e.reads = ids.empty() ? 1 : ids.size();
+        e.bestMeanLogLik = e.meanLogEvidence = ll;
+        e.disagreeing = std::move(ids);
+        return e;
+    };
+    EXPECT_FALSE(m.update(step(0, -0.1, {})));  // agreeing: the long-term level
+    EXPECT_FALSE(m.update(step(1, -1000, {"A"})));
     EXPECT_TRUE(m.suspicious());
-    EXPECT_FALSE(m.update(std::nullopt));  // no known landmark: no evidence
-    EXPECT_TRUE(m.update(-10.0));
-    EXPECT_FALSE(m.update(-0.1));
+    EXPECT_FALSE(m.update(TStepEvidence{}));  // no read: no evidence
+    // Two disagreeing steps, but the same tag: not yet.
+    EXPECT_FALSE(m.update(step(2, -1000, {"A"})));
+    EXPECT_TRUE(m.update(step(3, -1000, {"B"})));
+    EXPECT_FALSE(m.update(step(4, -0.1, {})));
     EXPECT_FALSE(m.suspicious());
+    // A mild disagreement over many tags is a drifted filter, not a kidnapping.
+    CKidnapMonitor mild(o);
+    EXPECT_FALSE(mild.update(step(0, -0.1, {})));
+    for (int k = 1; k < 20; k++)
+        EXPECT_FALSE(mild.update(step(k, -10, {"T" + std::to_string(k)})));
+    EXPECT_EQ(mild.resets(), 0u);
+    // A run ends after max_gap seconds without a disagreeing step.
+    CKidnapMonitor gap(o);
+    EXPECT_FALSE(gap.update(step(0, -0.1, {})));
+    EXPECT_FALSE(gap.update(step(1, -1000, {"A"})));
+    EXPECT_FALSE(gap.update(step(1 + o.max_gap + 1, -1000, {"B"})));
+    EXPECT_TRUE(gap.update(step(1 + o.max_gap + 2, -1000, {"C"})));
     EXPECT_EQ(m.resets(), 1u);
 }

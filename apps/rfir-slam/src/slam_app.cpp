@@ -165,7 +165,10 @@ std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSla
       << ", \"mean_update_time_s\": " << run.meanStepTime
       << ", \"max_update_time_s\": " << run.maxStepTime
       << ", \"total_time_s\": " << run.totalTime << ", \"kidnap_resets\": " << run.resets
-      << ", \"run\": " << identity << "}\n";
+      << ", \"kidnap_reset_times_s\": [";
+    for (size_t k = 0; k < run.resetTimes.size(); k++)
+        o << (k ? ", " : "") << run.resetTimes[k];
+    o << "], \"run\": " << identity << "}\n";
     return o.str();
 }
 
@@ -317,8 +320,16 @@ int runSlamApp(const TAppArgs& args) {
     auto engine = rfir::slam::makeEngine(cfg, data.header);
     const size_t n = data.inputs.size();
     rfir::common::CProgress progress("rfir-slam", n, a.quiet ? nullptr : &std::cerr);
-    const auto run = rfir::slam::runEngine(*engine, start, data.inputs,
-                                           [&progress](size_t i) { progress.update(i); });
+    // Each sensor resetting gets a line when it happens (not only a count).
+    size_t reported = 0;
+    const auto run = rfir::slam::runEngine(*engine, start, data.inputs, [&](size_t i) {
+        progress.update(i);
+        const auto& rt = engine->resetTimes();
+        for (; reported < rt.size(); reported++)
+            logStream(a) << "rfir-slam: kidnap detected, sensor resetting at t = "
+                         << std::fixed << std::setprecision(2) << rt[reported] << " s\n"
+                         << std::defaultfloat;
+    });
     progress.finish();
 
     const TTruth truth = loadTruth(a, data.info);

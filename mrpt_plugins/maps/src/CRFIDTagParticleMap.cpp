@@ -158,6 +158,7 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
                     r.area = Impl::area(rd.reader);
                     r.known = known;
                     r.plainCurrent = cur && (!particles || e.sample.empty());
+                    r.id = &it->first;
                     out.reads.push_back(r);
                 }
                 known++;
@@ -178,6 +179,7 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
             if (!r.est) continue;
             r.range = z.range;
             r.yaw = z.yaw;
+            r.id = &it->first;
             out.reads.push_back(r);
         }
         return true;

@@ -94,6 +94,7 @@ void CRobotPoseParticles::performSubstitution(const std::vector<size_t>& indx) {
     for (size_t i = 0; i < sorted.size(); i++) parts[i] = m_particles[sorted[i]];
     m_particles = std::move(parts);
     m_ess = -1;
+    m_stepLogLik.clear();  // no longer this set's
 }
 
 void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
@@ -106,16 +107,37 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
             *g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; },
             *m_rng);
     m_ess = -1;
+    m_stepLogLik.clear();
     if (!m_model) return;
     m_model->afterMotion();
     if (!m_model->weighs()) return;
+    m_stepLogLik.resize(m_particles.size());
     for (size_t i = 0; i < m_particles.size(); i++) {
         const double ll = m_model->logLikelihood(i, m_particles[i].d);
         if (!std::isfinite(ll))
             throw std::runtime_error(
                 "the landmark map returned a non-finite log-likelihood");
+        m_stepLogLik[i] = ll;
         m_particles[i].log_w += ll;
     }
+}
+
+double CRobotPoseParticles::stepLogEvidence() const {
+    // log sum w exp(ll) - log sum w over the weights before the weighing
+    // (log_w - ll: the same terms, not a second likelihood pass). Valid until
+    // the weights change again (normalising keeps it: a common shift).
+    if (m_stepLogLik.size() != m_particles.size() || m_particles.empty()) return 0;
+    double maxPrior = -1e300, maxPost = -1e300;
+    for (size_t i = 0; i < m_particles.size(); i++) {
+        maxPrior = std::max(maxPrior, m_particles[i].log_w - m_stepLogLik[i]);
+        maxPost = std::max(maxPost, m_particles[i].log_w);
+    }
+    double sPrior = 0, sPost = 0;
+    for (size_t i = 0; i < m_particles.size(); i++) {
+        sPrior += std::exp(m_particles[i].log_w - m_stepLogLik[i] - maxPrior);
+        sPost += std::exp(m_particles[i].log_w - maxPost);
+    }
+    return maxPost + std::log(sPost) - maxPrior - std::log(sPrior);
 }
 
 }  // namespace rfir::slam

@@ -13,7 +13,8 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     using R = rfir::ini::TRange;
     const rfir::ini::CIniSection sec(
         c, s,
-        {"enabled", "collapse_loglik", "collapse_steps", "inject_fraction",
+        {"enabled", "collapse_loglik", "collapse_steps", "min_tags", "max_gap",
+         "evidence_drop", "fast_rate", "slow_rate", "inject_fraction",
          "keep_heading_share", "heading_std"});
     enabled = sec.getBool("enabled", enabled);
     // A mean log-likelihood per detection beyond +-1000 means nothing: a
@@ -22,6 +23,12 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         sec.getDouble("collapse_loglik", collapse_loglik, R::closed(-1000, 1000));
     collapse_steps =
         unsigned(sec.getInt("collapse_steps", int64_t(collapse_steps), 1, 1000000));
+    min_tags = unsigned(sec.getInt("min_tags", int64_t(min_tags), 1, 1000000));
+    max_gap = sec.getDouble("max_gap", max_gap, R::aboveZero(1e6));
+    evidence_drop = sec.getDouble("evidence_drop", evidence_drop, R::closed(0, 1e6));
+    fast_rate = sec.getDouble("fast_rate", fast_rate, R::aboveZero(1));
+    slow_rate = sec.getDouble("slow_rate", slow_rate, R::aboveZero(1));
+    if (slow_rate > fast_rate) sec.fail("slow_rate", "must not exceed fast_rate");
     inject_fraction = sec.getDouble("inject_fraction", inject_fraction, R::aboveZero(1));
     keep_heading_share =
         sec.getDouble("keep_heading_share", keep_heading_share, R::closed(0, 1));
@@ -31,10 +38,19 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                       const std::string& s) const {
     c.write(s, "enabled", enabled, -1, -1, "sensor resetting on collapse");
-    c.write(s, "collapse_loglik", collapse_loglik, -1, -1,
-            "lost if best mean log-lik per known detection is below this...");
+    c.write(
+        s, "collapse_loglik", collapse_loglik, -1, -1,
+        "a step disagrees if its best particle's mean log-lik per read is below this...");
     c.write(s, "collapse_steps", int(collapse_steps), -1, -1,
-            "...for this many steps in a row");
+            "...in this many steps of one run of disagreeing steps...");
+    c.write(s, "min_tags", int(min_tags), -1, -1,
+            "...over this many distinct known landmarks...");
+    c.write(s, "max_gap", max_gap, -1, -1,
+            "...ended by an agreeing step or this long [s] without a disagreeing one");
+    c.write(s, "evidence_drop", evidence_drop, -1, -1,
+            "and the fast evidence average this far below the slow one");
+    c.write(s, "fast_rate", fast_rate, -1, -1, "fast average rate per weighing step");
+    c.write(s, "slow_rate", slow_rate, -1, -1, "slow average rate per weighing step");
     c.write(s, "inject_fraction", inject_fraction, -1, -1,
             "share of robot particles redrawn from detections");
     c.write(s, "keep_heading_share", keep_heading_share, -1, -1,
@@ -42,14 +58,29 @@ void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "heading_std", heading_std, -1, -1, "their heading std [rad]");
 }
 
-bool CKidnapMonitor::update(std::optional<double> bestMeanLogLik) {
-    if (!o_.enabled || !bestMeanLogLik) return false;
-    if (*bestMeanLogLik >= o_.collapse_loglik) {
-        bad_ = 0;
+bool CKidnapMonitor::update(const TStepEvidence& e) {
+    if (!o_.enabled || e.reads == 0) return false;
+    // Augmented MCL's two averages of the step evidence (in log units, so
+    // that a read far outside its reader does not underflow).
+    const bool first = !fast_;
+    fast_ =
+        first ? e.meanLogEvidence : *fast_ + o_.fast_rate * (e.meanLogEvidence - *fast_);
+    const double slowBefore = first ? e.meanLogEvidence : *slow_;
+    slow_ = slowBefore + o_.slow_rate * (e.meanLogEvidence - slowBefore);
+    if (bad_ > 0 && e.t - lastBad_ > o_.max_gap) endRun();
+    if (e.bestMeanLogLik >= o_.collapse_loglik) {
+        endRun();  // some particle explains the reads: not lost
         return false;
     }
-    if (++bad_ < o_.collapse_steps) return false;
-    bad_ = 0;
+    if (bad_++ == 0) slowAtRunStart_ = slowBefore;
+    lastBad_ = e.t;
+    ids_.insert(e.disagreeing.begin(), e.disagreeing.end());
+    // The drop is measured against the slow average from before this run
+    // took it down, so a long run cannot hide itself.
+    if (bad_ < o_.collapse_steps || ids_.size() < o_.min_tags ||
+        *fast_ > slowAtRunStart_ - o_.evidence_drop)
+        return false;
+    endRun();
     ++resets_;
     return true;
 }

@@ -88,7 +88,8 @@ TSlamRun runEngine(CSlamEngine& engine, const mrpt::poses::CPose2D& start,
     }
     run.meanStepTime = inputs.empty() ? 0 : run.totalTime / double(inputs.size());
     run.map = engine.landmarks();
-    run.resets = engine.resets();
+    run.resetTimes = engine.resetTimes();
+    run.resets = run.resetTimes.size();
     return run;
 }
 

@@ -23,73 +23,17 @@ struct TTagMapSettings {
 };
 
 namespace {
-/** Kidnap check: the best particle's mean log-likelihood per detection of a
- * landmark the map already has, and those detections as anchors. */
-struct TConsistency {
-    std::optional<double> bestMeanLogLik;
-    std::vector<TAnchor> anchors;
-};
-
-/** Range-bearing: Gaussian log-likelihood of the landmark point the reading
- * implies, against the landmark estimate, with the sensor noise and the
- * landmark's own uncertainty (a collapse test must not fire on a landmark
- * that is merely poorly known). */
-double rbConsistencyLogLik(const mrpt::poses::CPose2D& sensor,
-                           const CRFIDTagParticleMap::TTagEntry& lm, const TDetection& d,
-                           const rfir::models::RangeBearingParams& rb) {
-    const auto q = rfir::models::rangeBearingToPoint(
-        {sensor.x(), sensor.y(), sensor.phi()}, d.a, d.b);
-    const double px = q.x, py = q.y;
-    const double var = rb.sigmaRange * rb.sigmaRange +
-                       (d.a * rb.sigmaBearing) * (d.a * rb.sigmaBearing) +
-                       0.5 * (lm.estimate.cov(0, 0) + lm.estimate.cov(1, 1));
-    const double e2 = (px - lm.estimate.mean.x) * (px - lm.estimate.mean.x) +
-                      (py - lm.estimate.mean.y) * (py - lm.estimate.mean.y);
-    return -0.5 * e2 / var;
-}
-
-/** Also leaves in `terms` (M rows of one column per known detection) each
- * RFID detection's term, which the weighing reuses when nothing changed. */
-TConsistency checkConsistency(const CRFIDTagParticleMap& map,
-                              const CRobotPoseParticles& pf,
-                              const std::vector<TDetection>& dets,
-                              std::vector<double>& terms) {
-    TConsistency c;
-    std::vector<const CRFIDTagParticleMap::TTagEntry*> known;
+/** This step's detections of landmarks the map already has: where sensor
+ * resetting may put the robot. */
+std::vector<TAnchor> knownAnchors(const CRFIDTagParticleMap& map,
+                                  const std::vector<TDetection>& dets) {
+    std::vector<TAnchor> out;
     for (const auto& d : dets) {
         const auto* e =
             d.kind == TDetection::Kind::RFID ? map.getTag(d.id) : map.getLandmark(d.id);
-        if (!e) continue;
-        known.push_back(e);
-        c.anchors.push_back({d, e->estimate.mean.x, e->estimate.mean.y});
+        if (e) out.push_back({d, e->estimate.mean.x, e->estimate.mean.y});
     }
-    terms.clear();
-    if (known.empty()) return c;
-    const auto& rb = map.likelihoodOptions.rangeBearing;
-    const rfir::models::DetectionLikelihood det(map.likelihoodOptions.detection);
-    const size_t K = known.size();
-    terms.resize(pf.m_particles.size() * K);
-    double best = -1e300;
-    for (size_t i = 0; i < pf.m_particles.size(); i++) {
-        const auto& p = pf.m_particles[i];
-        const mrpt::math::TPose2D pose = p.d.asTPose();
-        const double cphi = p.d.phi_cos(), sphi = p.d.phi_sin();  // cached
-        double ll = 0;
-        for (size_t k = 0; k < K; k++) {
-            const TDetection& d = c.anchors[k].det;
-            // = map.detectionLogLikelihood(*known[k], pose, area)
-            const double t =
-                d.kind == TDetection::Kind::RFID
-                    ? det.logLikelihood(pose, cphi, sphi, {d.a, d.b, d.halfX, d.halfY},
-                                        known[k]->estimate.mean)
-                    : rbConsistencyLogLik(p.d + d.sensor, *known[k], d, rb);
-            terms[i * K + k] = t;
-            ll += t;
-        }
-        best = std::max(best, ll);
-    }
-    c.bestMeanLogLik = best / double(K);
-    return c;
+    return out;
 }
 
 class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepModel {
@@ -113,33 +57,36 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
                   cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
+        resetTimes_.clear();
         pose_ = start;
     }
     void step(const TSlamInput& in) override;
     mrpt::poses::CPose2D pose() const override { return pose_; }
     std::vector<TLandmarkOut> landmarks() const override;
-    size_t resets() const override { return kidnap_.resets(); }
+    const std::vector<double>& resetTimes() const override { return resetTimes_; }
 
   private:
     /** @name The stages executeOn runs between the motion and the weighing.
      * @{ */
-    void afterMotion() override { beforeWeighing(dets_, literal_); }
+    void afterMotion() override;
     bool weighs() const override { return !obs_.empty(); }
     double logLikelihood(size_t i, const mrpt::poses::CPose2D& p) const override {
         return weigh(i, p);
     }
     /** @} */
-    void beforeWeighing(const std::vector<TDetection>& dets, bool literal);
-    void resolveReads(bool reuseTerms);
+    void resolveReads();
+    /** After the weighing: the kidnap monitor's step, sensor resetting. */
+    void checkKidnap();
+    TStepEvidence stepEvidence() const;
     /** Particle i's log-likelihood: the sum computeObservationLikelihood
      * gives over obs_ (same terms, same order), from reads resolved once. */
     double weigh(size_t i, const mrpt::poses::CPose2D& p) const {
         // CPose3D(p) has x, y, yaw == p.x(), p.y(), p.phi() exactly.
         const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
-        const double* t = termsWidth_ ? &terms_[i * termsWidth_] : nullptr;
         double ll = 0;
         const double c = p.phi_cos(), s = p.phi_sin();  // cached in the pose
-        for (const auto& r : reads_) ll += map_.robotReadsLogLikelihood(r, pose, c, s, t);
+        for (const auto& r : reads_)
+            ll += map_.robotReadsLogLikelihood(r, pose, c, s, nullptr);
         return ll;
     }
     void insert(const mrpt::poses::CPose2D& at) {
@@ -171,58 +118,78 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     bool literal_ = false;          //!< tags updated before the weighing
     bool mapThisStep_ = true;
     std::vector<CRFIDTagParticleMap::TRobotReads> reads_;
-    std::vector<double> terms_;  //!< kidnap check's per-particle terms
-    size_t termsWidth_ = 0;      //!< their columns; 0: not reusable
     std::optional<mrpt::poses::CPose2D> predictedForInsert_;
     mrpt::poses::CPose2D pose_;
+    double t_ = 0;                    //!< this step's time
+    std::vector<double> resetTimes_;  //!< when sensor resetting fired
 };
 
-void CTagMapEngine::beforeWeighing(const std::vector<TDetection>& dets, bool literal) {
-    // With recovery off the per-particle consistency pass decides nothing
-    // (the monitor ignores it): skip it, it costs a likelihood per particle.
-    const TConsistency c = cfg_.kidnap.enabled ? checkConsistency(map_, pf_, dets, terms_)
-                                               : (terms_.clear(), TConsistency{});
-    const bool reset = kidnap_.update(c.bestMeanLogLik);
-    // While the detections contradict every particle, the map is not updated
+void CTagMapEngine::afterMotion() {
+    // While a run of reads contradicts every particle the map is not updated
     // (it would be updated from a wrong pose).
-    mapThisStep_ = !reset && !kidnap_.suspicious();
-    // The mean after motion, computed only if used and before any particle
-    // or weight changes.
-    std::optional<mrpt::poses::CPose2D> predicted;
-    const auto predictedMean = [&]() {
-        if (!predicted) predicted = pf_.meanPose();
-        return *predicted;
-    };
-    if (reset) {
-        const size_t M = pf_.m_particles.size();
-        const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
-        const auto poses =
-            resettingPoses(c.anchors, n, predictedMean().phi(), cfg_.kidnap, rng_);
-        for (size_t k = 0; k < poses.size(); k++)
-            pf_.replacePose(rng_.drawUniform32bit() % M, poses[k]);
-    }
-    const bool insertNow = literal && mapThisStep_;
-    if (insertNow) insert(predictedMean());
+    mapThisStep_ = !kidnap_.suspicious();
     predictedForInsert_.reset();
-    if (!literal && mapThisStep_ && cfg_.slam.tag_update_pose == "predicted")
-        predictedForInsert_ = predictedMean();
-    // The kidnap terms are the weighing's own when neither the particles nor
-    // the map changed since.
-    resolveReads(!reset && !insertNow);
+    if (literal_ && mapThisStep_)
+        insert(pf_.meanPose());
+    else if (!literal_ && cfg_.slam.tag_update_pose == "predicted")
+        predictedForInsert_ = pf_.meanPose();
+    resolveReads();
 }
 
-void CTagMapEngine::resolveReads(bool reuseTerms) {
+void CTagMapEngine::resolveReads() {
     reads_.assign(obs_.size(), {});
     for (size_t j = 0; j < obs_.size(); j++)
         if (map_.genericMapParams.enableObservationLikelihood)
             map_.resolveRobotReads(*obs_[j], reads_[j]);
+}
+
+TStepEvidence CTagMapEngine::stepEvidence() const {
+    // Everything from the weighing's own terms: per-particle sums, and, for
+    // the best particle, the same callable on each read alone.
+    TStepEvidence e;
+    e.t = t_;
+    for (const auto& r : reads_) e.reads += r.reads.size();
+    const auto& ll = pf_.stepLogLik();
+    if (e.reads == 0 || ll.empty()) return e;
+    const size_t best = size_t(std::max_element(ll.begin(), ll.end()) - ll.begin());
+    const double K = double(e.reads);
+    e.bestMeanLogLik = ll[best] / K;
+    e.meanLogEvidence = pf_.stepLogEvidence() / K;
+    const auto& p = pf_.m_particles[best].d;
+    const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
+    for (const auto& r : reads_) {
+        CRFIDTagParticleMap::TRobotReads one = r;
+        for (const auto& rd : r.reads) {
+            one.reads.assign(1, rd);
+            if (map_.robotReadsLogLikelihood(one, pose, p.phi_cos(), p.phi_sin(),
+                                             nullptr) < cfg_.kidnap.collapse_loglik &&
+                rd.id)
+                e.disagreeing.push_back(*rd.id);
+        }
+    }
+    return e;
+}
+
+void CTagMapEngine::checkKidnap() {
+    if (!cfg_.kidnap.enabled || pf_.stepLogLik().empty()) return;
+    const TStepEvidence e = stepEvidence();
+    if (e.reads == 0) return;
+    const bool reset = kidnap_.update(e);
+    if (kidnap_.suspicious() || reset) mapThisStep_ = false;
+    if (!reset) return;
+    resetTimes_.push_back(t_);
     const size_t M = pf_.m_particles.size();
-    termsWidth_ = reuseTerms && M > 0 && !terms_.empty() ? terms_.size() / M : 0;
+    const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
+    const auto poses = resettingPoses(knownAnchors(map_, dets_), n, pf_.meanPose().phi(),
+                                      cfg_.kidnap, rng_);
+    for (size_t k = 0; k < poses.size(); k++)
+        pf_.replacePose(rng_.drawUniform32bit() % M, poses[k]);
 }
 
 void CTagMapEngine::step(const TSlamInput& in) {
     // The step, in order (issue 11's pipeline; 003 Algorithm 1, 004 Alg. 1):
     // 1. this step's observations and detections;
+    t_ = in.t;
     obs_.clear();
     dets_.clear();
     if (in.rfid) {
@@ -242,16 +209,18 @@ void CTagMapEngine::step(const TSlamInput& in) {
     literal_ = map_.updateTagsBeforeWeighing();
     // 2-4. MRPT's CParticleFilter::executeOn: propagate every particle by a
     // draw of the odometry Gaussian (engine's generator), then afterMotion()
-    // (kidnap check, reads resolved once; literal policy: tag update), then
+    // (reads resolved once; literal policy: tag update), then
     // weigh with logLikelihood(), then normalise;
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement)
         acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
     filter_.executeOn(pf_, &acts, nullptr);
-    // 5. resample when the ESS is low (MRPT's scheme, engine's generator);
+    // 5. the kidnap check on this weighing (sensor resetting if lost);
+    checkKidnap();
+    // 6. resample when the ESS is low (MRPT's scheme, engine's generator);
     resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
     reads_.clear();
-    // 6. the estimate, and the tag update of the revisit policies.
+    // 7. the estimate, and the tag update of the revisit policies.
     pose_ = pf_.meanPose();
     if (!literal_ && mapThisStep_)
         insert(predictedForInsert_ ? *predictedForInsert_ : pose_);

@@ -144,6 +144,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
             size_t known = 0;
             /** RFID: the term is detectionLogLikelihood(tag, robot, area). */
             bool plainCurrent = false;
+            const std::string* id = nullptr;  //!< tag or landmark ID (the map's)
         };
         bool rangeBearing = false;
         double sensorX = 0, sensorY = 0, sensorYaw = 0;  //!< range-bearing

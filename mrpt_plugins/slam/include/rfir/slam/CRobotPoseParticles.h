@@ -35,8 +35,8 @@ class CRobotPoseParticles
     class IStepModel {
       public:
         virtual ~IStepModel() = default;
-        /** After the motion, before the weighing: the kidnap check and, under
-         * the literal policy, the tag update. */
+        /** After the motion, before the weighing: the reads resolved once
+         * and, under the literal policy, the tag update. */
         virtual void afterMotion() = 0;
         /** Whether this step's observation weighs the robot. */
         virtual bool weighs() const = 0;
@@ -47,6 +47,14 @@ class CRobotPoseParticles
     void setStepModel(IStepModel* m) { m_model = m; }
 
     mrpt::poses::CPose2D meanPose() const;
+
+    /** @name The last step's weighing, as it weighed: per-particle
+     * log-likelihoods and the log of their mean under the weights before it
+     * (the step's evidence). Empty / 0 when the step did not weigh.
+     * @{ */
+    const std::vector<double>& stepLogLik() const { return m_stepLogLik; }
+    double stepLogEvidence() const;
+    /** @} */
 
     /** Replaces particle i's pose, giving it the current best weight (sensor
      * resetting). */
@@ -67,7 +75,8 @@ class CRobotPoseParticles
   protected:
     rfir::models::TRandom* m_rng = nullptr;  //!< the engine's generator
     IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
-    double m_ess = -1;  //!< ESS computed by normalizeWeights; < 0: stale
+    double m_ess = -1;                 //!< ESS computed by normalizeWeights; < 0: stale
+    std::vector<double> m_stepLogLik;  //!< this step's weighing terms
 
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,

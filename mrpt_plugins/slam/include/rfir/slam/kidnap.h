@@ -1,28 +1,49 @@
-/* rfir: kidnapping recovery (thesis 3.4.3) by sensor resetting. The robot
- * filter is taken as lost when, for `collapse_steps` steps in a row, even its
- * best particle explains the detections of known landmarks badly (mean
- * log-likelihood per known detection below `collapse_loglik`). Then a
- * fraction of the particles is redrawn where a re-detected known landmark
- * lies in the detecting reader's area (or at the measured range and bearing),
- * and the map is not updated while the filter is lost. */
+/* rfir: kidnapping detection and recovery (thesis 3.4.3) by sensor
+ * resetting. The evidence is the robot filter's own weighing of each step
+ * (the same per-particle log-likelihoods that weigh the particles, from the
+ * reads the map's robot-update policy picks): a step disagrees when even the
+ * best particle explains its reads badly (mean log-likelihood per read below
+ * `collapse_loglik`). One such step is normal (a drifted filter meeting a
+ * revisited tag is corrected by that very weighing); a kidnapping is a run
+ * of disagreeing steps, with no agreeing step between them, over several
+ * distinct known landmarks, while the short-term average of the step
+ * evidence (the weighted mean likelihood per read) has fallen below its
+ * long-term average (augmented MCL, as in nav2 / Beluga). Then a fraction of
+ * the particles is redrawn where a re-detected known landmark lies in the
+ * detecting reader's area (or at the measured range and bearing), and the
+ * map is not updated while the reads disagree. */
 #pragma once
 
 #include <rfir/slam/detections.h>
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/poses/CPose2D.h>
-#include <mrpt/random/RandomGenerators.h>
 #include <rfir/models/random.h>
 
 #include <optional>
+#include <set>
+#include <string>
 #include <vector>
 
 namespace rfir::slam {
 /** INI section [kidnap]. */
 struct TKidnapOptions : public mrpt::config::CLoadableOptions {
     bool enabled = true;
-    double collapse_loglik = -4.0;  //!< per known detection, best particle
-    unsigned collapse_steps = 3;
+    /** A read disagrees when the best particle's log-likelihood for it is
+     * below this (-4: a tag about three half-sides outside the reader). */
+    double collapse_loglik = -4.0;
+    unsigned collapse_steps = 3;  //!< disagreeing steps in a run...
+    unsigned min_tags = 3;        //!< ...over this many distinct known landmarks
+    /** s: a run ends when no step disagrees for this long. */
+    double max_gap = 5.0;
+    /** Per read, log units: the fast average of the step evidence must be
+     * this far below the slow one (100: the reads about 14 half-sides of
+     * their readers away from every particle; a drifted filter meeting a
+     * revisited tag measured at most 41 on the stock INIs, a kidnapping
+     * 200 at 300 mm and 4000 at 60 mm). */
+    double evidence_drop = 100.0;
+    double fast_rate = 0.5;        //!< per weighing step (0, 1]
+    double slow_rate = 0.02;       //!< per weighing step (0, 1]
     double inject_fraction = 0.5;  //!< of the robot particles, per resetting
     /** Share of injected particles that keep the current heading estimate
      * (with heading_std noise); the rest get a uniform heading. */
@@ -35,28 +56,44 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions {
                           const std::string& s) const override;
 };
 
-/** A detection of a landmark whose position the map already knows. */
-struct TAnchor {
-    TDetection det;
-    double x = 0, y = 0;  //!< landmark estimate, world frame
+/** One weighing step, as the robot filter weighed it. */
+struct TStepEvidence {
+    double t = 0;                //!< s
+    size_t reads = 0;            //!< reads that weighed the robot (> 0)
+    double bestMeanLogLik = 0;   //!< best particle, per read
+    double meanLogEvidence = 0;  //!< log of the weighted mean likelihood, per read
+    std::vector<std::string> disagreeing;  //!< landmarks the best particle contradicts
 };
 
 class CKidnapMonitor {
   public:
     explicit CKidnapMonitor(const TKidnapOptions& o = {}) : o_(o) {}
-    /** One step: the best particle's mean log-likelihood per known
-     * detection (nullopt: no known landmark detected, nothing learnt).
-     * Returns true when sensor resetting should happen now. */
-    bool update(std::optional<double> bestMeanLogLik);
-    /** Inconsistent detections seen in this run of steps: do not map them. */
+    /** One weighing step. Returns true when sensor resetting should happen
+     * now. */
+    bool update(const TStepEvidence& e);
+    /** A run of disagreeing steps is open: do not map from this pose. */
     bool suspicious() const { return bad_ > 0; }
     size_t resets() const { return resets_; }
     const TKidnapOptions& options() const { return o_; }
 
   private:
+    void endRun() {
+        bad_ = 0;
+        ids_.clear();
+    }
     TKidnapOptions o_;
-    unsigned bad_ = 0;
+    unsigned bad_ = 0;                   //!< disagreeing steps in the open run
+    double lastBad_ = 0;                 //!< s, the run's last disagreeing step
+    std::set<std::string> ids_;          //!< distinct landmarks contradicted in it
+    std::optional<double> fast_, slow_;  //!< averages of meanLogEvidence
+    double slowAtRunStart_ = 0;          //!< slow_ before the open run
     size_t resets_ = 0;
+};
+
+/** A detection of a landmark whose position the map already knows. */
+struct TAnchor {
+    TDetection det;
+    double x = 0, y = 0;  //!< landmark estimate, world frame
 };
 
 /** A robot pose drawn so that anchor `a` is consistent with its detection,

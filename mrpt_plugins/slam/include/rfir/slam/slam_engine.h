@@ -40,8 +40,13 @@ class CSlamEngine {
     /** The current robot estimate. */
     virtual mrpt::poses::CPose2D pose() const = 0;
     virtual std::vector<TLandmarkOut> landmarks() const = 0;
-    /** Sensor resettings done so far (kidnapping recovery). */
-    virtual size_t resets() const { return 0; }
+    /** Times (TSlamInput::t) of the sensor resettings done so far
+     * (kidnapping recovery), in order. */
+    virtual const std::vector<double>& resetTimes() const {
+        static const std::vector<double> none;
+        return none;
+    }
+    size_t resets() const { return resetTimes().size(); }
 };
 
 /** The engine for cfg.slam.method; `hdr` names range-bearing landmarks. */
@@ -54,6 +59,7 @@ struct TSlamRun {
     std::vector<TLandmarkOut> map;
     double totalTime = 0, meanStepTime = 0, maxStepTime = 0;  //!< s, of step() calls
     size_t resets = 0;
+    std::vector<double> resetTimes;  //!< s, one per reset
 };
 
 /** Runs `engine` from `start` over the inputs; `progress(i)` after each step. */

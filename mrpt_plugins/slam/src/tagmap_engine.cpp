@@ -113,6 +113,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
                   cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
+        slip_.reset();
         pose_ = start;
     }
     void step(const TSlamInput& in) override;
@@ -165,6 +166,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     CRobotPoseParticles pf_;
     mrpt::bayes::CParticleFilter filter_;
     CKidnapMonitor kidnap_;
+    CSlipAwareMotion slip_;  //!< the motion model's slip memory
     rfir::models::TRandom rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<TDetection> dets_;  //!< this step's detections
@@ -246,7 +248,8 @@ void CTagMapEngine::step(const TSlamInput& in) {
     // weigh with logLikelihood(), then normalise;
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement)
-        acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
+        acts.insert(slip_.movement(*in.odometryIncrement, in.odometryDt,
+                                   in.odometryParts, cfg_.motion));
     filter_.executeOn(pf_, &acts, nullptr);
     // 5. resample when the ESS is low (MRPT's scheme, engine's generator);
     resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
@@ -261,9 +264,12 @@ std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {
     std::vector<TLandmarkOut> out;
     auto add = [&](const CRFIDTagParticleMap::TTagEntry* e, bool isTag) {
         const auto& est = e->estimate;
-        out.push_back({isTag, e->id, est.mean.x, est.mean.y,
+        TLandmarkOut l{isTag, e->id, est.mean.x, est.mean.y,
                        std::sqrt(std::max(0.0, est.cov(0, 0))),
-                       std::sqrt(std::max(0.0, est.cov(1, 1)))});
+                       std::sqrt(std::max(0.0, est.cov(1, 1)))};
+        l.reads = e->detections;
+        l.contradicted = e->contradicted;
+        out.push_back(l);
     };
     for (const auto* e : map_.tags()) add(e, true);
     for (const auto* e : map_.landmarks()) add(e, false);

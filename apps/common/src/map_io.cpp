@@ -99,8 +99,7 @@ TMapFile loadMapFile(std::istream& f, const std::string& path) {
         } else
             throw std::runtime_error(where + ": unknown record '" + t[0] +
                                      "' (expected tag, emitter or landmark)");
-        if (t.size() != 2 + nCoords && t.size() != 4 + nCoords &&
-            t.size() != 6 + nCoords)
+        if (t.size() != 2 + nCoords && t.size() != 4 + nCoords && t.size() != 6 + nCoords)
             throw std::runtime_error(
                 where + ": '" + t[0] + "' takes " + std::to_string(1 + nCoords) +
                 " fields (id and " + (nCoords == 3 ? "x y z" : "x y") +

@@ -243,8 +243,10 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                 in >> io.spreadCommitTravel;
             }
             lo.detection.outlierWeight = 0;
-            lo.detection.outlierLogFloor = rfir::models::DetectionModelParams().outlierLogFloor;
-            if (version >= 4) in >> lo.detection.outlierWeight >> lo.detection.outlierLogFloor;
+            lo.detection.outlierLogFloor =
+                rfir::models::DetectionModelParams().outlierLogFloor;
+            if (version >= 4)
+                in >> lo.detection.outlierWeight >> lo.detection.outlierLogFloor;
             m_landmarkNames.resize(
                 rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
             for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);
@@ -277,8 +279,8 @@ void CRFIDTagParticleMap::saveToTextFile(const std::string& path) const {
             ss << kind << ' ' << e->id << ' ' << e->estimate.mean.x << ' '
                << e->estimate.mean.y << ' '
                << std::sqrt(std::max(0.0, e->estimate.cov(0, 0))) << ' '
-               << std::sqrt(std::max(0.0, e->estimate.cov(1, 1))) << ' '
-               << e->detections << ' ' << e->contradicted << '\n';
+               << std::sqrt(std::max(0.0, e->estimate.cov(1, 1))) << ' ' << e->detections
+               << ' ' << e->contradicted << '\n';
     };
     put("tag", tags());
     put("landmark", landmarks());

@@ -131,12 +131,14 @@ mrpt::obs::CActionRobotMovement2D makeMovement(const mrpt::poses::CPose2D& u, do
 mrpt::obs::CActionRobotMovement2D CSlipAwareMotion::movement(
     const mrpt::poses::CPose2D& u, double dt, const std::vector<TOdometryPart>& parts,
     const TMotionOptions& o) {
-    const bool slip = parts.empty() ? slipLimited(u, dt, o) < 1
-                                    : std::any_of(parts.begin(), parts.end(), [&](auto& p) {
-                                          return slipLimited(p.interval, p.dt, o) < 1;
-                                      });
+    const bool slip = parts.empty()
+                          ? slipLimited(u, dt, o) < 1
+                          : std::any_of(parts.begin(), parts.end(), [&](auto& p) {
+                                return slipLimited(p.interval, p.dt, o) < 1;
+                            });
     auto mv = makeMovement(u, dt, parts, o, m_rate ? &*m_rate : nullptr);
-    if (!slip && dt > 0) m_rate = mrpt::poses::CPose2D(u.x() / dt, u.y() / dt, u.phi() / dt);
+    if (!slip && dt > 0)
+        m_rate = mrpt::poses::CPose2D(u.x() / dt, u.y() / dt, u.phi() / dt);
     return mv;
 }
 

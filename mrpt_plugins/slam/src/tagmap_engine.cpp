@@ -248,8 +248,8 @@ void CTagMapEngine::step(const TSlamInput& in) {
     // weigh with logLikelihood(), then normalise;
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement)
-        acts.insert(slip_.movement(*in.odometryIncrement, in.odometryDt,
-                                   in.odometryParts, cfg_.motion));
+        acts.insert(slip_.movement(*in.odometryIncrement, in.odometryDt, in.odometryParts,
+                                   cfg_.motion));
     filter_.executeOn(pf_, &acts, nullptr);
     // 5. resample when the ESS is low (MRPT's scheme, engine's generator);
     resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
@@ -264,7 +264,10 @@ std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {
     std::vector<TLandmarkOut> out;
     auto add = [&](const CRFIDTagParticleMap::TTagEntry* e, bool isTag) {
         const auto& est = e->estimate;
-        TLandmarkOut l{isTag, e->id, est.mean.x, est.mean.y,
+        TLandmarkOut l{isTag,
+                       e->id,
+                       est.mean.x,
+                       est.mean.y,
                        std::sqrt(std::max(0.0, est.cov(0, 0))),
                        std::sqrt(std::max(0.0, est.cov(1, 1)))};
         l.reads = e->detections;

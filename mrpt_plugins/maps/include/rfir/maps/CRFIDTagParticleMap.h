@@ -80,8 +80,8 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
          * read (one per particle) and the robot mean they are relative to. */
         std::vector<mrpt::math::TPose2D> spreadPoses;
         mrpt::math::TPose2D spreadOrigin{0, 0, 0};
-        double spreadTravel = 0;    //!< RFID track travel (m) at the first read
-        uint64_t detections = 0;    //!< number of (reader, tag) reads
+        double spreadTravel = 0;  //!< RFID track travel (m) at the first read
+        uint64_t detections = 0;  //!< number of (reader, tag) reads
         /** Of these, reads the tag's estimate at the time contradicted
          * (DetectionLikelihood::contradicts; map.txt's last column). */
         uint64_t contradicted = 0;

@@ -73,10 +73,9 @@ struct TOdometryPart {
  * (interpolated polls) the step draws, of each interval, `fraction` of its
  * noise variance: the draws over an interval then add up to one draw of that
  * interval's noise, however many polls fall in it (docs/slam.md). */
-mrpt::obs::CActionRobotMovement2D makeMovement(const mrpt::poses::CPose2D& u, double dt,
-                                               const std::vector<TOdometryPart>& parts,
-                                               const TMotionOptions& opts,
-                                               const mrpt::poses::CPose2D* rate = nullptr);
+mrpt::obs::CActionRobotMovement2D makeMovement(
+    const mrpt::poses::CPose2D& u, double dt, const std::vector<TOdometryPart>& parts,
+    const TMotionOptions& opts, const mrpt::poses::CPose2D* rate = nullptr);
 
 /** makeMovement with a memory, one per filter run: a slip's believed
  * increment is the last believed increment's rate (per second, `rate` above)

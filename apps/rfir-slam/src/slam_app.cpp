@@ -340,8 +340,11 @@ int runSlamApp(const TAppArgs& args) {
     progress.finish();
 
     const TTruth truth = loadTruth(a, data.info);
-    const auto errs = writeAndScore(a, out, truth, run, "", cfg.slam.method,
-                                    "<tag or landmark> <id> <x> <y> <sx> <sy>");
+    const bool counts = cfg.method() != rfir::slam::TMethod::FastSLAM;
+    const auto errs = writeAndScore(
+        a, out, truth, run, "", cfg.slam.method,
+        counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
+               : "<tag or landmark> <id> <x> <y> <sx> <sy>");
     std::optional<rfir::eval::TEvalResult> smoothed;
     if (a.smooth) smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run);
     writeSettingsAndStats(out, cfg, run, a.seed, ini);

@@ -23,3 +23,9 @@ if(TARGET rfir_sim)
     SOURCES test_graph_smoother.cpp
     LIBS rfir_slam rfir_sim rfir_eval)
 endif()
+if(TARGET rfir_sim)
+  # Ghost reads, slips, dead readers, asynchronous polls (issue 12).
+  rfir_add_test(test_slam_robust
+    SOURCES test_slam_robust.cpp
+    LIBS rfir_slam rfir_sim rfir_eval)
+endif()

@@ -17,6 +17,7 @@
 #include <rfir/eval/report.h>
 #include <rfir/eval/scene3d.h>
 #include <rfir/slam/slam_engine.h>
+#include <rfir/slam/slam_inputs.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -72,8 +73,10 @@ struct TLoaded {
     rfir::eval::TRawlogInfo info;  //!< odometry and sensor geometry, for the scoring
 };
 
-/** Reads the rawlog once: the filters' inputs and what the scoring needs. */
-TLoaded readInputs(const std::string& path) {
+/** Reads the rawlog once: the filters' inputs and what the scoring needs;
+ * with [motion] interpolate_polls, every instant at the odometry interpolated
+ * to its time (rfir::slam::interpolatedInputs). */
+TLoaded readInputs(const std::string& path, const rfir::slam::TMotionOptions& motion) {
     if (!mrpt::system::fileExists(path))
         throw std::runtime_error("cannot read rawlog '" + path + "'");
     rfir::common::CRawlogReader rd(path);
@@ -82,17 +85,32 @@ TLoaded readInputs(const std::string& path) {
     l.hasHeader = rd.hasHeader();
     rfir::eval::CRawlogInfoBuilder info(l.header);
     rfir::common::TRawlogStep st;
+    std::vector<rfir::slam::TRawInstant> raw;
+    std::optional<mrpt::poses::CPose2D> odo;  // the increments composed
+    std::optional<double> lastOdoT;
     while (rd.next(st)) {
         info.add(st);
         if (!l.firstOdometry) l.firstOdometry = st.odometry;
         rfir::slam::TSlamInput in;
         in.t = st.t;
         in.odometryIncrement = st.odometryIncrement;
+        if (st.odometryIncrement && lastOdoT) in.odometryDt = st.t - *lastOdoT;
+        if (st.odometryIncrement || st.odometry) lastOdoT = st.t;
         in.rfid = st.rfid;
         in.rb = st.rb;
+        if (motion.interpolate_polls) {
+            // Absolute odometry from the increments the filters would use.
+            const bool anchor = !odo && (st.odometry || st.odometryIncrement);
+            if (anchor) odo = mrpt::poses::CPose2D();
+            if (st.odometryIncrement) odo = *odo + *st.odometryIncrement;
+            raw.push_back({st.t, anchor || st.odometryIncrement ? odo : std::nullopt,
+                           st.rfid, st.rb});
+        }
         l.inputs.push_back(std::move(in));
     }
     if (l.inputs.empty()) throw std::runtime_error(path + ": no sensing instant");
+    if (motion.interpolate_polls)
+        l.inputs = rfir::slam::interpolatedInputs(raw, motion.odometry_latency);
     l.info = info.finish();
     return l;
 }
@@ -307,7 +325,7 @@ int runSlamApp(const TAppArgs& args) {
                  << ini << ", seed " << a.seed << ")\n";
     // The folder is checked (and refused if it holds foreign files) before the run.
     rfir::common::COutputFolder out(a.outDir, kOutputPatterns, "rfir-slam");
-    TLoaded data = readInputs(a.rawlog);
+    TLoaded data = readInputs(a.rawlog, cfg.motion);
     // Refused before the filter runs and anything is written.
     if (a.smooth)
         for (const auto& in : data.inputs)
@@ -333,8 +351,11 @@ int runSlamApp(const TAppArgs& args) {
     progress.finish();
 
     const TTruth truth = loadTruth(a, data.info);
-    const auto errs = writeAndScore(a, out, truth, run, "", cfg.slam.method,
-                                    "<tag or landmark> <id> <x> <y> <sx> <sy>");
+    const bool counts = cfg.method() != rfir::slam::TMethod::FastSLAM;
+    const auto errs = writeAndScore(
+        a, out, truth, run, "", cfg.slam.method,
+        counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
+               : "<tag or landmark> <id> <x> <y> <sx> <sy>");
     std::optional<rfir::eval::TEvalResult> smoothed;
     if (a.smooth) smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run);
     writeSettingsAndStats(out, cfg, run, a.seed, ini);

@@ -2,7 +2,9 @@
 #include <rfir/common/map_io.h>
 #include <rfir/common/text_input.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -38,12 +40,25 @@ void saveMapFile(const std::string& path, const TMapFile& m, const std::string& 
             o << kindName(e.kind) << " " << e.id << " " << e.x << " " << e.y;
             if (e.kind == TMapEntry::Kind::Emitter) o << " " << e.z;
             if (e.sx && e.sy) o << " " << *e.sx << " " << *e.sy;
+            if (e.sx && e.sy && e.reads && e.contradicted)
+                o << " " << *e.reads << " " << *e.contradicted;
             o << "\n";
         }
     });
 }
 
 namespace {
+/** A read count: a non-negative decimal integer. */
+uint64_t count(const std::string& tok, const std::string& where, const char* what) {
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long v = std::strtoull(tok.c_str(), &end, 10);
+    if (tok.empty() || tok[0] == '-' || tok[0] == '+' || *end || errno == ERANGE)
+        throw std::runtime_error(where + ": " + what + " '" + tok +
+                                 "' is not a non-negative integer");
+    return v;
+}
+
 double num(const std::string& tok, const std::string& where, const char* what) {
     char* end = nullptr;
     const double v = std::strtod(tok.c_str(), &end);
@@ -84,11 +99,12 @@ TMapFile loadMapFile(std::istream& f, const std::string& path) {
         } else
             throw std::runtime_error(where + ": unknown record '" + t[0] +
                                      "' (expected tag, emitter or landmark)");
-        if (t.size() != 2 + nCoords && t.size() != 4 + nCoords)
+        if (t.size() != 2 + nCoords && t.size() != 4 + nCoords && t.size() != 6 + nCoords)
             throw std::runtime_error(
                 where + ": '" + t[0] + "' takes " + std::to_string(1 + nCoords) +
                 " fields (id and " + (nCoords == 3 ? "x y z" : "x y") +
-                "), optionally followed by sx sy; got " + std::to_string(t.size() - 1));
+                "), optionally followed by sx sy and then reads contradicted; got " +
+                std::to_string(t.size() - 1));
         if (!isValidId(t[1]))
             throw std::runtime_error(where + ": invalid ID '" + t[1] +
                                      "' (1-64 characters of [A-Za-z0-9_.:-])");
@@ -96,11 +112,19 @@ TMapFile loadMapFile(std::istream& f, const std::string& path) {
         e.x = num(t[2], where, "x");
         e.y = num(t[3], where, "y");
         if (nCoords == 3) e.z = num(t[4], where, "z");
-        if (t.size() == 4 + nCoords) {
+        if (t.size() >= 4 + nCoords) {
             e.sx = num(t[2 + nCoords], where, "sx");
             e.sy = num(t[3 + nCoords], where, "sy");
             if (*e.sx < 0 || *e.sy < 0)
                 throw std::runtime_error(where + ": standard deviations must be >= 0");
+        }
+        if (t.size() == 6 + nCoords) {
+            e.reads = count(t[4 + nCoords], where, "reads");
+            e.contradicted = count(t[5 + nCoords], where, "contradicted");
+            if (*e.contradicted > *e.reads)
+                throw std::runtime_error(where + ": contradicted " +
+                                         std::to_string(*e.contradicted) +
+                                         " exceeds reads " + std::to_string(*e.reads));
         }
         e.line = ln;
         // A single-code emitter (ID 1..9) is a repeated-ID emitter: the same ID

@@ -258,6 +258,9 @@ struct CRFIDTagParticleMapImpl {
                 first = 1;
             }
             Entry& e = it->second;
+            // Judged against the estimate before this instant's reads move it.
+            for (size_t k = first; k < areas.size(); k++)
+                if (det.contradicts(robot, areas[k], e.estimate.mean)) e.contradicted++;
             markRead(m, e, before, m.m_track[0], areas.size());
             if (first < areas.size()) {
                 const std::vector<ReaderArea> rest(areas.begin() + first, areas.end());

@@ -120,6 +120,7 @@ void writeEntries(CArchive& a,
         for (const auto& q : e->spreadPoses) a << q.x << q.y << q.phi;
         a << e->spreadOrigin.x << e->spreadOrigin.y << e->spreadOrigin.phi
           << e->spreadTravel;
+        a.WriteAs<uint64_t>(e->contradicted);  // v4
     }
 }
 
@@ -149,6 +150,7 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
             a >> e.spreadOrigin.x >> e.spreadOrigin.y >> e.spreadOrigin.phi >>
                 e.spreadTravel;
         }
+        if (version >= 4) e.contradicted = a.ReadAs<uint64_t>();
         const std::string id = e.id;
         t.emplace(id, std::move(e));
     }
@@ -156,8 +158,9 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
 }  // namespace
 
 uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
-    // 3: estimators by registry name with their own compact state.
-    return 3;
+    // 3: estimators by registry name with their own compact state; 4: the
+    // outlier mixture's options and the contradicted-read counts.
+    return 4;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
@@ -180,6 +183,7 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.robotLikelihood));
     out.WriteAs<uint64_t>(lo.robotLikelihoodK);
     out << io.spreadCommitTravel;
+    out << lo.detection.outlierWeight << lo.detection.outlierLogFloor;  // v4
     out << m_landmarkNames;
     out.WriteAs<uint64_t>(m_track[0].steps);
     out.WriteAs<uint64_t>(m_track[1].steps);
@@ -194,7 +198,8 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
         case 0:
         case 1:
         case 2:
-        case 3: {
+        case 3:
+        case 4: {
             in >> genericMapParams;
             auto& io = insertionOptions;
             if (version >= 3)
@@ -237,6 +242,11 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                         std::to_string(TLikelihoodOptions::kMaxRobotLikelihoodK));
                 in >> io.spreadCommitTravel;
             }
+            lo.detection.outlierWeight = 0;
+            lo.detection.outlierLogFloor =
+                rfir::models::DetectionModelParams().outlierLogFloor;
+            if (version >= 4)
+                in >> lo.detection.outlierWeight >> lo.detection.outlierLogFloor;
             m_landmarkNames.resize(
                 rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
             for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);
@@ -262,13 +272,15 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
 void CRFIDTagParticleMap::saveToTextFile(const std::string& path) const {
     std::ostringstream ss;
     ss << std::setprecision(9);
-    ss << "# rfir tag map: <kind> <id> <x> <y> <sx> <sy> (metres)\n";
+    ss << "# rfir tag map: <kind> <id> <x> <y> <sx> <sy> (metres) <reads> "
+          "<contradicted>\n";
     auto put = [&](const char* kind, const std::vector<const TTagEntry*>& v) {
         for (const auto* e : v)
             ss << kind << ' ' << e->id << ' ' << e->estimate.mean.x << ' '
                << e->estimate.mean.y << ' '
                << std::sqrt(std::max(0.0, e->estimate.cov(0, 0))) << ' '
-               << std::sqrt(std::max(0.0, e->estimate.cov(1, 1))) << '\n';
+               << std::sqrt(std::max(0.0, e->estimate.cov(1, 1))) << ' ' << e->detections
+               << ' ' << e->contradicted << '\n';
     };
     put("tag", tags());
     put("landmark", landmarks());

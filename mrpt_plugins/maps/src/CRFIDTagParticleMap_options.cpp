@@ -80,7 +80,8 @@ const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowed
         "rb_sigma_bearing_deg", "robot_update",
         "revisit_min_gap",      "revisit_min_travel",
         "rb_use_landmark_cov",  "robot_likelihood",
-        "robot_likelihood_k"};
+        "robot_likelihood_k",   "outlier_weight",
+        "outlier_log_floor"};
     return k;
 }
 
@@ -93,6 +94,12 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
     detection.beta = sec.getDouble("beta", detection.beta, TRange::aboveZero(100));
     detection.gaussianSigmaScale = sec.getDouble(
         "gaussian_sigma_scale", detection.gaussianSigmaScale, TRange::aboveZero(100));
+    // A share of ghost reads above one half would make the model itself the
+    // outlier; the floor is log(reader area / area reads can come from).
+    detection.outlierWeight =
+        sec.getDouble("outlier_weight", detection.outlierWeight, TRange::closed(0, 0.5));
+    detection.outlierLogFloor = sec.getDouble(
+        "outlier_log_floor", detection.outlierLogFloor, TRange::closed(-50, 0));
     rangeBearing.sigmaRange =
         sec.getDouble("rb_sigma_range", rangeBearing.sigmaRange, TRange::aboveZero(100));
     rangeBearing.sigmaBearing = mrpt::DEG2RAD(
@@ -116,6 +123,8 @@ void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) 
       << "\n"
       << "beta                 = " << detection.beta << "\n"
       << "gaussian_sigma_scale = " << detection.gaussianSigmaScale << "\n"
+      << "outlier_weight       = " << detection.outlierWeight << "\n"
+      << "outlier_log_floor    = " << detection.outlierLogFloor << "\n"
       << "rb_sigma_range       = " << rangeBearing.sigmaRange << "\n"
       << "rb_sigma_bearing_deg = " << mrpt::RAD2DEG(rangeBearing.sigmaBearing) << "\n"
       << "robot_update         = " << kPolicyNames[static_cast<size_t>(robotUpdate)]

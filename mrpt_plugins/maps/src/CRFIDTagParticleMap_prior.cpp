@@ -27,6 +27,14 @@ TPriorRecord parseRecord(const std::string& line, const std::string& where) {
             throw std::runtime_error(where +
                                      ": the standard deviations must be two "
                                      "non-negative numbers");
+        // map.txt's read counts (reads, contradicted), not used by a prior.
+        double reads = 0, contradicted = 0;
+        if (in >> reads) {
+            if (!(in >> contradicted) || !(reads >= 0) || !(contradicted >= 0))
+                throw std::runtime_error(where +
+                                         ": after the standard deviations, the read "
+                                         "counts must be two non-negative numbers");
+        }
     }
     std::string extra;
     if (in.clear(), in >> extra)

@@ -35,6 +35,16 @@ double DetectionLikelihood::logLikelihood(const mrpt::math::TPose2D& robot, doub
     return logLikelihoodOffset(e.x, e.y, r.halfX, r.halfY);
 }
 
+bool DetectionLikelihood::contradicts(const mrpt::math::TPose2D& robot,
+                                      const ReaderArea& r,
+                                      const mrpt::math::TPoint2D& tag) const {
+    const auto e = readModel(robot, r.x, r.y, tag);
+    const double base = m_p.model == DetectionModel::Step
+                            ? m_step.logLik(e.x, e.y, r.halfX, r.halfY)
+                            : m_gauss.logLik(e.x, e.y, r.halfX, r.halfY);
+    return base < m_p.outlierLogFloor;
+}
+
 double DetectionLikelihood::likelihood(const mrpt::math::TPose2D& robot,
                                        const ReaderArea& r,
                                        const mrpt::math::TPoint2D& tag) const {

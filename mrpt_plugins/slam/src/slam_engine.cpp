@@ -13,9 +13,12 @@ namespace rfir::slam {
 namespace {
 /** The action collection the filters draw motion from: the odometry
  * increment with the INI's noise model (not the rawlog writer's). */
-mrpt::obs::CActionCollection motionAction(const TSlamInput& in, const TMotionOptions& m) {
+mrpt::obs::CActionCollection motionAction(const TSlamInput& in, const TMotionOptions& m,
+                                          CSlipAwareMotion& slip) {
     mrpt::obs::CActionCollection acts;
-    if (in.odometryIncrement) acts.insert(makeMovement(*in.odometryIncrement, m));
+    if (in.odometryIncrement)
+        acts.insert(
+            slip.movement(*in.odometryIncrement, in.odometryDt, in.odometryParts, m));
     return acts;
 }
 
@@ -27,6 +30,7 @@ class CFastSLAMEngine : public CSlamEngine {
     }
     void reset(const mrpt::poses::CPose2D& start) override {
         rng_.randomize(cfg_.seed);  // the run's one generator (--seed)
+        slip_.reset();
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
                   cfg_.slam.start_std_phi, rng_);
     }
@@ -35,7 +39,7 @@ class CFastSLAMEngine : public CSlamEngine {
         if (in.rfid) appendDetections(*in.rfid, dets);
         if (in.rb) appendDetections(*in.rb, hdr_, dets);
         pf_.setDetections(&dets);
-        const auto acts = motionAction(in, cfg_.motion);
+        const auto acts = motionAction(in, cfg_.motion, slip_);
         filter_.executeOn(pf_, &acts, nullptr);  // motion, weighing, normalising
         resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
         pf_.setDetections(nullptr);
@@ -56,6 +60,7 @@ class CFastSLAMEngine : public CSlamEngine {
     CFastSLAMParticles pf_;
     mrpt::bayes::CParticleFilter filter_;
     rfir::models::TRandom rng_;
+    CSlipAwareMotion slip_;
     mrpt::poses::CPose2D pose_;
 };
 

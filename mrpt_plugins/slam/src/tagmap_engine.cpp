@@ -58,6 +58,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                   cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
         resetTimes_.clear();
+        slip_.reset();
         pose_ = start;
     }
     void step(const TSlamInput& in) override;
@@ -112,6 +113,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     CRobotPoseParticles pf_;
     mrpt::bayes::CParticleFilter filter_;
     CKidnapMonitor kidnap_;
+    CSlipAwareMotion slip_;  //!< the motion model's slip memory
     rfir::models::TRandom rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<TDetection> dets_;  //!< this step's detections
@@ -213,7 +215,8 @@ void CTagMapEngine::step(const TSlamInput& in) {
     // weigh with logLikelihood(), then normalise;
     mrpt::obs::CActionCollection acts;
     if (in.odometryIncrement)
-        acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
+        acts.insert(slip_.movement(*in.odometryIncrement, in.odometryDt, in.odometryParts,
+                                   cfg_.motion));
     filter_.executeOn(pf_, &acts, nullptr);
     // 5. the kidnap check on this weighing (sensor resetting if lost);
     checkKidnap();
@@ -230,9 +233,15 @@ std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {
     std::vector<TLandmarkOut> out;
     auto add = [&](const CRFIDTagParticleMap::TTagEntry* e, bool isTag) {
         const auto& est = e->estimate;
-        out.push_back({isTag, e->id, est.mean.x, est.mean.y,
+        TLandmarkOut l{isTag,
+                       e->id,
+                       est.mean.x,
+                       est.mean.y,
                        std::sqrt(std::max(0.0, est.cov(0, 0))),
-                       std::sqrt(std::max(0.0, est.cov(1, 1)))});
+                       std::sqrt(std::max(0.0, est.cov(1, 1)))};
+        l.reads = e->detections;
+        l.contradicted = e->contradicted;
+        out.push_back(l);
     };
     for (const auto* e : map_.tags()) add(e, true);
     for (const auto* e : map_.landmarks()) add(e, false);

@@ -4,6 +4,7 @@
 
 #include <rfir/obs/ir_lattice.h>
 
+#include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -16,6 +17,9 @@ struct TMapEntry {
     std::string id;
     double x = 0, y = 0, z = 0;    //!< z only for emitters
     std::optional<double> sx, sy;  //!< standard deviations (estimated maps)
+    /** rfir-slam's PF/PS maps, after sx sy: the tag's reads and how many of
+     * them its estimate at the time contradicted (docs/import.md). */
+    std::optional<uint64_t> reads{}, contradicted{};
     int line = 0;  //!< line in the file it was read from (0: not read from a file)
 };
 using TMapFile = std::vector<TMapEntry>;
@@ -24,7 +28,8 @@ const char* kindName(TMapEntry::Kind k);
 /** True if `id` is a valid textlog ID: [A-Za-z0-9_.:-], 1..64 characters. */
 bool isValidId(const std::string& id);
 
-/** Writes atomically, one record per line, with sx sy when present. */
+/** Writes atomically, one record per line, with sx sy when present, then
+ * the read counts when present. */
 void saveMapFile(const std::string& path, const TMapFile& m,
                  const std::string& headerComment = {});
 /** Reads a map / ground-truth file. Throws std::runtime_error("FILE:LINE: ...")

@@ -27,6 +27,7 @@ inline TMapFile landmarkEntries(const std::vector<rfir::slam::TLandmarkOut>& lms
         e.y = l.y;
         e.sx = l.sx;
         e.sy = l.sy;
+        if (l.reads) e.reads = l.reads, e.contradicted = l.contradicted;
         m.push_back(e);
     }
     return m;

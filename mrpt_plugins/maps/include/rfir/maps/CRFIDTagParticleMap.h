@@ -80,8 +80,11 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
          * read (one per particle) and the robot mean they are relative to. */
         std::vector<mrpt::math::TPose2D> spreadPoses;
         mrpt::math::TPose2D spreadOrigin{0, 0, 0};
-        double spreadTravel = 0;    //!< RFID track travel (m) at the first read
-        uint64_t detections = 0;    //!< number of (reader, tag) reads
+        double spreadTravel = 0;  //!< RFID track travel (m) at the first read
+        uint64_t detections = 0;  //!< number of (reader, tag) reads
+        /** Of these, reads the tag's estimate at the time contradicted
+         * (DetectionLikelihood::contradicts; map.txt's last column). */
+        uint64_t contradicted = 0;
         uint64_t visits = 0;        //!< number of visits (first pass = 1)
         uint64_t lastReadStep = 0;  //!< index (1-based) of the last observation read in
         double lastReadTravel = 0;  //!< robot path length (m) at that observation

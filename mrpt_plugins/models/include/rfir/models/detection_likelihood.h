@@ -33,7 +33,9 @@ struct DetectionModelParams {
     double gaussianSigmaScale = 1.0;
     /** Outlier mixture (COutlierReadNoise) over the model above: share eps of
      * reads from anywhere, with log-likelihood `outlierLogFloor` (relative to
-     * the model's best, 0). 0 = off, the seeds' model alone. */
+     * the model's best, 0). 0 = off, the seeds' model alone. INI
+     * [tagmap_likelihood] outlier_weight, outlier_log_floor (docs/slam.md).
+     * The floor also marks a read as contradicted (contradicts()). */
     double outlierWeight = 0.0;
     double outlierLogFloor = -10.0;
 };
@@ -71,6 +73,12 @@ class DetectionLikelihood {
                          const ReaderArea& r, const mrpt::math::TPoint2D& tag) const;
     double likelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
                       const mrpt::math::TPoint2D& tag) const;
+
+    /** True if the base model (without the mixture) gives this read a
+     * log-likelihood below outlierLogFloor: the mixture, at any weight, would
+     * call it a random reading rather than a read of a tag at `tag`. */
+    bool contradicts(const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                     const mrpt::math::TPoint2D& tag) const;
 
     const DetectionModelParams& params() const { return m_p; }
 

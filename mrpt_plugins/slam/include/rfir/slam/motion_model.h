@@ -12,6 +12,7 @@
 #include <rfir/models/odometry_noise.h>
 
 #include <optional>
+#include <vector>
 
 namespace rfir::slam {
 /** INI section [motion]: the std of an increment (d: its length, |phi|: its
@@ -24,6 +25,16 @@ struct TMotionOptions : public mrpt::config::CLoadableOptions {
     double a4 = 0.02;            //!< rad of heading std per rad turned
     double min_std_xy = 0.001;   //!< m
     double min_std_phi = 0.002;  //!< rad
+    /** The robot's physical limits (0: none). An odometry increment faster
+     * than these over its interval is a slip, not believed (slipLimited). */
+    double max_speed = 0;      //!< m/s
+    double max_turn_rate = 0;  //!< rad/s
+    /** Reader polls between odometry records placed at the odometry
+     * interpolated to their time (interpolatedInputs). */
+    bool interpolate_polls = false;
+    /** s: an odometry record stamped t is the pose at t - odometry_latency
+     * (only with interpolate_polls). */
+    double odometry_latency = 0;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;
@@ -40,6 +51,47 @@ struct TMotionOptions : public mrpt::config::CLoadableOptions {
 /** The Gaussian movement for an odometry increment, with our noise model. */
 mrpt::obs::CActionRobotMovement2D makeMovement(const mrpt::poses::CPose2D& increment,
                                                const TMotionOptions& opts);
+
+/** Share k in (0, 1] of an odometry increment over dt seconds the robot's
+ * limits allow: 1 within max_speed and max_turn_rate (or dt <= 0, or no limit
+ * set), else the largest k with k |(dx, dy)| <= max_speed dt and k |dphi| <=
+ * max_turn_rate dt. */
+double slipLimited(const mrpt::poses::CPose2D& u, double dt, const TMotionOptions& o);
+
+/** One odometry interval a step's increment takes part of (TSlamInput). */
+struct TOdometryPart {
+    mrpt::poses::CPose2D interval;  //!< the interval's whole increment
+    double dt = 0;                  //!< its duration (s)
+    double fraction = 1;            //!< the share of it in this step
+};
+
+/** The movement a filter draws for a step's increment `u` (dt: the seconds
+ * it covers, 0 unknown). Without `parts`, MRPT's model of u, except that a
+ * slip (slipLimited < 1) is not believed: the increment becomes `rate` * dt
+ * (limited) if a rate is given, else k u, and its noise std grows by
+ * k |(dx, dy)| and k |dphi| (the robot's limit over dt). With `parts`
+ * (interpolated polls) the step draws, of each interval, `fraction` of its
+ * noise variance: the draws over an interval then add up to one draw of that
+ * interval's noise, however many polls fall in it (docs/slam.md). */
+mrpt::obs::CActionRobotMovement2D makeMovement(
+    const mrpt::poses::CPose2D& u, double dt, const std::vector<TOdometryPart>& parts,
+    const TMotionOptions& opts, const mrpt::poses::CPose2D* rate = nullptr);
+
+/** makeMovement with a memory, one per filter run: a slip's believed
+ * increment is the last believed increment's rate (per second, `rate` above)
+ * over dt, within the limits: the robot keeps its speed while its wheels
+ * slip; the noise is the slip rule's. Without a rate yet, the increment
+ * scaled to the limits. */
+class CSlipAwareMotion {
+  public:
+    void reset() { m_rate.reset(); }
+    mrpt::obs::CActionRobotMovement2D movement(const mrpt::poses::CPose2D& u, double dt,
+                                               const std::vector<TOdometryPart>& parts,
+                                               const TMotionOptions& opts);
+
+  private:
+    std::optional<mrpt::poses::CPose2D> m_rate;  //!< m/s, m/s, rad/s (robot frame)
+};
 
 /** The odometry increment carried by an action collection, if any. */
 std::optional<mrpt::poses::CPose2D> odometryIncrement(

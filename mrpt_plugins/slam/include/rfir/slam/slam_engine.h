@@ -20,6 +20,11 @@ struct TSlamInput {
     double t = 0;
     /** Odometry increment since the previous instant (none: not moved). */
     std::optional<mrpt::poses::CPose2D> odometryIncrement;
+    /** Seconds the increment covers (0: unknown): the slip test's time. */
+    double odometryDt = 0;
+    /** Interpolated polls ([motion] interpolate_polls): the odometry
+     * intervals the increment is part of; empty: one whole interval. */
+    std::vector<TOdometryPart> odometryParts;
     rfir::obs::CObservationRFIDReaders::Ptr rfid;
     mrpt::obs::CObservationBearingRange::Ptr rb;
 };
@@ -29,6 +34,10 @@ struct TLandmarkOut {
     bool isTag = true;  //!< RFID tag, else range-bearing landmark
     std::string id;
     double x = 0, y = 0, sx = 0, sy = 0;
+    /** PF/PS: the (reader, tag) reads and how many of them the estimate at
+     * the time contradicted (map.txt's last two columns); FastSLAM: unset. */
+    std::optional<uint64_t> reads{};
+    uint64_t contradicted = 0;
 };
 
 class CSlamEngine {

@@ -322,17 +322,17 @@ int runSlamApp(const TAppArgs& args) {
     progress.finish();
 
     const TTruth truth = loadTruth(a, data.info);
-    const auto errs = writeAndScore(a, out, truth, run, "", cfg.slam.method,
-                                    "<tag or landmark> <id> <x> <y> <sx> <sy>");
+    auto errs = writeAndScore(a, out, truth, run, "", cfg.slam.method,
+                              "<tag or landmark> <id> <x> <y> <sx> <sy>");
     std::optional<rfir::eval::TEvalResult> smoothed;
     if (a.smooth) smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run);
     writeSettingsAndStats(out, cfg, run, a.seed, ini);
     out.commit();
     std::vector<rfir::eval::TEvalResult> rows;
-    if (errs) rows.push_back(*errs);
+    if (errs) rows.push_back(std::move(*errs));
     if (smoothed) {
         smoothed->odometry.reset();  // the odometry row is printed once
-        rows.push_back(*smoothed);
+        rows.push_back(std::move(*smoothed));
     }
     if (!rows.empty() && !a.quiet) std::cout << rfir::eval::formatErrorTable(rows);
     logStream(a) << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()

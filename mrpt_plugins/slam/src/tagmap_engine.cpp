@@ -142,6 +142,17 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         for (const auto& r : reads_) ll += map_.robotReadsLogLikelihood(r, pose, c, s, t);
         return ll;
     }
+    /** The step's action: one collection kept for the run, its movement
+     * recomputed in place (a new collection per step cloned the movement
+     * and its PDF). */
+    const mrpt::obs::CActionCollection* movement(
+        const std::optional<mrpt::poses::CPose2D>& increment) {
+        if (!increment) return &noMove_;
+        if (move_.size() == 0) move_.insert(mrpt::obs::CActionRobotMovement2D());
+        move_.getActionByClass<mrpt::obs::CActionRobotMovement2D>()->computeFromOdometry(
+            *increment, motionModel_);
+        return &move_;
+    }
     void insert(const mrpt::poses::CPose2D& at) {
         if (map_.usesRobotSamples()) drawRobotSamples();
         for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
@@ -166,6 +177,9 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     mrpt::bayes::CParticleFilter filter_;
     CKidnapMonitor kidnap_;
     rfir::models::TRandom rng_;
+    const mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel_ =
+        cfg_.motion.toMRPT();
+    mrpt::obs::CActionCollection move_, noMove_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<TDetection> dets_;  //!< this step's detections
     bool literal_ = false;          //!< tags updated before the weighing
@@ -244,10 +258,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
     // draw of the odometry Gaussian (engine's generator), then afterMotion()
     // (kidnap check, reads resolved once; literal policy: tag update), then
     // weigh with logLikelihood(), then normalise;
-    mrpt::obs::CActionCollection acts;
-    if (in.odometryIncrement)
-        acts.insert(makeMovement(*in.odometryIncrement, cfg_.motion));
-    filter_.executeOn(pf_, &acts, nullptr);
+    filter_.executeOn(pf_, movement(in.odometryIncrement), nullptr);
     // 5. resample when the ESS is low (MRPT's scheme, engine's generator);
     resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
     reads_.clear();

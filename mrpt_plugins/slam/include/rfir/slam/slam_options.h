@@ -51,6 +51,9 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
 template <class GetPose>
 mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
                                       GetPose get);
+/** The same, log-weight i given by `logw(i)`. */
+template <class GetLogW, class GetPose>
+mrpt::poses::CPose2D weightedMeanPose(size_t n, GetLogW logw, GetPose get);
 
 }  // namespace rfir::slam
 
@@ -59,11 +62,17 @@ namespace rfir::slam {
 template <class GetPose>
 mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
                                       GetPose get) {
+    return weightedMeanPose(
+        n, [&](size_t i) { return logw[i]; }, get);
+}
+
+template <class GetLogW, class GetPose>
+mrpt::poses::CPose2D weightedMeanPose(size_t n, GetLogW logw, GetPose get) {
     double mx = -1e300;
-    for (size_t i = 0; i < n; i++) mx = std::max(mx, logw[i]);
+    for (size_t i = 0; i < n; i++) mx = std::max(mx, logw(i));
     double sw = 0, x = 0, y = 0, c = 0, s = 0;
     for (size_t i = 0; i < n; i++) {
-        const double w = std::exp(logw[i] - mx);
+        const double w = std::exp(logw(i) - mx);
         const mrpt::poses::CPose2D& p = get(i);
         sw += w;
         x += w * p.x();

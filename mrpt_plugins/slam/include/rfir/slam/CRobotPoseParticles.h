@@ -68,6 +68,10 @@ class CRobotPoseParticles
     rfir::models::TRandom* m_rng = nullptr;  //!< the engine's generator
     IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
     double m_ess = -1;  //!< ESS computed by normalizeWeights; < 0: stale
+    /** The last normalizeWeights' log-weights and their exp, which meanPose
+     * reuses while the particles still hold those log-weights (checked: a
+     * comparison per particle instead of an exp). */
+    std::vector<double> m_normLogW, m_normW;
 
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,

@@ -115,15 +115,19 @@ TTarget memoryShape(const TBenchReport& r) {
     const double fsMp = slopeM(r, "fastslam", lo, hi, true);
     const double fsNp = slopeN(r, "fastslam", true);
     const double M = double(r.options.fixedM);
+    // Without FastSLAM in the run (--methods), its half is said, not "nan".
+    const bool fs = !std::isnan(fsM) && !std::isnan(fsN);
     t.detail =
         fmt("bytes per extra robot particle at N = %.0f: PS %.0f, PF %.0f", N, psM, pfM) +
-        fmt(", FastSLAM %.0f at its peak (%.1f per particle per tag) and %.0f after "
-            "the timed updates; ",
-            fsMp, fsMp / N, fsM) +
-        fmt("bytes per extra tag at M = %.0f: PS %.0f, PF %.0f, FastSLAM ", M, psN, pfN) +
-        fmt("%.0f at its peak (%.1f per tag per particle) and %.0f after the timed "
-            "updates",
-            fsNp, fsNp / M, fsN);
+        (fs ? fmt(", FastSLAM %.0f at its peak (%.1f per particle per tag) and %.0f "
+                  "after the timed updates; ",
+                  fsMp, fsMp / N, fsM)
+            : std::string("; ")) +
+        fmt("bytes per extra tag at M = %.0f: PS %.0f, PF %.0f", M, psN, pfN) +
+        (fs ? fmt(", FastSLAM %.0f at its peak (%.1f per tag per particle) and %.0f "
+                  "after the timed updates",
+                  fsNp, fsNp / M, fsN)
+            : std::string(" (FastSLAM not in this run)"));
     return t;
 }
 

@@ -75,8 +75,12 @@ std::vector<TProcessRun> runProcesses(const TBenchOptions& o) {
     const std::string dir = selfDir();
     const std::string sim = dir + "/rfir-sim", slam = dir + "/rfir-slam";
     if (!mrpt::system::fileExists(sim) || !mrpt::system::fileExists(slam)) return {};
-    char tmpl[] = "/tmp/rfir-bench-XXXXXX";
-    if (!mkdtemp(tmpl)) throw std::runtime_error("rfir-bench: cannot make a temp folder");
+    // The logs and rfir-slam's outputs go to a scratch folder, removed after.
+    const char* tmpDir = std::getenv("TMPDIR");
+    std::string tmpl =
+        std::string(tmpDir && *tmpDir ? tmpDir : "/tmp") + "/rfir-bench-XXXXXX";
+    if (!mkdtemp(tmpl.data()))
+        throw std::runtime_error("rfir-bench: cannot make a scratch folder " + tmpl);
     const std::string tmp = tmpl;
     struct TLogSpec {
         std::string ini;

@@ -3,5 +3,5 @@
 # assertions.
 if(TARGET rfir-bench)
   rfir_add_test(test_bench_smoke SOURCES test_bench_smoke.cpp LIBS)
-  add_dependencies(test_bench_smoke rfir-bench)
+  add_dependencies(test_bench_smoke rfir-bench rfir-sim rfir-slam)
 endif()

@@ -59,15 +59,16 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
             dir);
     ASSERT_EQ(r.status, 0) << r.err;
     // Table: the floor, both sweeps, the whole runs, the plain reference side
-    // by side and nine targets.
+    // by side, the whole rfir-slam processes and ten targets.
     EXPECT_NE(r.out.find("floor (1 fast Gaussian motion draw"), std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("per step against the plain reference"), std::string::npos);
     EXPECT_NE(r.out.find("time and memory against M"), std::string::npos);
     EXPECT_NE(r.out.find("time and memory against N"), std::string::npos);
     EXPECT_NE(r.out.find("whole offline runs"), std::string::npos);
+    EXPECT_NE(r.out.find("whole rfir-slam processes"), std::string::npos);
     EXPECT_EQ(count(r.out, "PASS  ") + count(r.out, "FAIL  ") + count(r.out, "n/a   "),
-              9u)
+              10u)
         << r.out;
     // One row per method in the sweep over M (1 value) and over N (2 values),
     // plus the whole runs (M = 100 and 500).
@@ -82,7 +83,7 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
     EXPECT_EQ(count(js, "\"skipped\": false"), 9u);
     EXPECT_EQ(count(js, "\"median_us\": "), 9u + 2u);  // cases + floor at M = 100, 500
     EXPECT_EQ(count(js, "\"state_bytes\": "), 9u);
-    EXPECT_EQ(count(js, "\"result\": "), 9u);
+    EXPECT_EQ(count(js, "\"result\": "), 10u);
     EXPECT_EQ(count(js, "\"plain_us_per_step\": "), 1u);
     // The plain reference maps every tag read, as the engines do.
     const auto num = [&](const std::string& key) {
@@ -93,6 +94,15 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
     EXPECT_EQ(num("plain_tags"), num("ps_tags"));
     EXPECT_EQ(num("plain_tags"), num("pf_tags"));
     EXPECT_EQ(count(js, "\"x_realtime\": "), 6u);
+    // Two whole rfir-slam processes (the floor, the 300 mm log), each more
+    // than its binary's start-up alone.
+    EXPECT_EQ(count(js, "\"cpu_seconds\": "), 2u) << js;
+    const auto real = [&](const std::string& key) {
+        const size_t at = js.find("\"" + key + "\": ");
+        return at == std::string::npos ? -1.0 : std::stod(js.substr(at + key.size() + 4));
+    };
+    EXPECT_GT(real("startup_cpu_seconds"), 0.0);
+    EXPECT_GT(real("cpu_seconds"), real("startup_cpu_seconds"));
     // Every case mapped the tags it was built with (N, or N = 10 / 100).
     EXPECT_EQ(count(js, "\"landmarks\": 10}"), 3u) << js;
     EXPECT_EQ(count(js, "\"landmarks\": 100}"), 3u);

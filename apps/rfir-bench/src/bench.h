@@ -95,6 +95,17 @@ struct TPlainCompare {
     std::vector<size_t> engineTags;
 };
 
+/** A whole rfir-slam process (PS-SLAM, stock INI, default outputs) on a
+ * simulated rawlog, timed from outside (process_run.cpp). */
+struct TProcessRun {
+    std::string log;
+    double robotSeconds = 0;
+    size_t M = 0;
+    double cpuSeconds = 0;         //!< user + system, fastest round
+    double wallSeconds = 0;        //!< wall clock, fastest round
+    double startupCpuSeconds = 0;  //!< `rfir-slam --version`: loading alone
+};
+
 /** A pass/fail target with the numbers that decide it. */
 struct TTarget {
     std::string name;
@@ -111,6 +122,7 @@ struct TBenchReport {
     std::vector<TCaseResult> sweepM, sweepN;
     std::vector<TRealtimeResult> realtime;
     std::vector<TPlainCompare> plain;
+    std::vector<TProcessRun> process;
     std::vector<TTarget> targets;
 };
 
@@ -133,6 +145,10 @@ std::vector<TPlainCompare> runPlainCompare(const TBenchOptions& o);
 /** Thread CPU seconds of the plain reference over a run (ps settings at M). */
 double plainSeconds(const TBenchOptions& o, const std::vector<rfir::slam::TSlamInput>& in,
                     const mrpt::poses::CPose2D& start, size_t M, size_t& mapped);
+
+/** Whole rfir-slam processes on the floor and the 300 s log (none if the
+ * programs are not beside rfir-bench). */
+std::vector<TProcessRun> runProcesses(const TBenchOptions& o);
 
 /** Fills the ratios (to the floor, to PS-SLAM) and the targets. */
 void evaluate(TBenchReport& r);

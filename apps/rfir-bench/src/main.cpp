@@ -116,6 +116,8 @@ void runAll(TBenchReport& r, bool quiet) {
     r.realtime = runRealtime(o, runs);
     progress("side by side with the plain reference");
     r.plain = runPlainCompare(o);
+    progress("whole rfir-slam processes");
+    r.process = runProcesses(o);
 }
 
 /** The --set edits into o (by section), checked by loading every INI the

@@ -118,6 +118,10 @@ void printTable(const TBenchReport& r, std::ostream& out) {
         out << "\n";
     }
     printPlain(r, out);
+    if (!r.process.empty()) out << "\nwhole rfir-slam processes (PS-SLAM, user + sys)\n";
+    for (const auto& p : r.process)
+        out << row("  %s, M = %zu: %.3f s CPU, %.3f s wall (loading alone %.3f s)\n",
+                   p.log.c_str(), p.M, p.cpuSeconds, p.wallSeconds, p.startupCpuSeconds);
     out << "\ntargets\n";
     for (const auto& t : r.targets)
         out << (t.measured ? (t.pass ? "  PASS  " : "  FAIL  ") : "  n/a   ") << t.name
@@ -191,6 +195,15 @@ std::string toJson(const TBenchReport& r) {
             o << ", \"" << p.methods[k] << "_us_per_step\": " << p.engineUs[k] << ", \""
               << p.methods[k] << "_tags\": " << p.engineTags[k];
         o << "}";
+    }
+    o << "],\n  \"process\": [";
+    for (size_t i = 0; i < r.process.size(); i++) {
+        const auto& p = r.process[i];
+        o << (i ? ", " : "") << "{\"log\": \"" << jsonEscape(p.log)
+          << "\", \"M\": " << p.M << ", \"robot_seconds\": " << p.robotSeconds
+          << ", \"cpu_seconds\": " << p.cpuSeconds
+          << ", \"wall_seconds\": " << p.wallSeconds
+          << ", \"startup_cpu_seconds\": " << p.startupCpuSeconds << "}";
     }
     o << "],\n  \"targets\": [";
     for (size_t i = 0; i < r.targets.size(); i++) {

@@ -34,6 +34,17 @@ void cases(std::ostringstream& o, const std::vector<TCaseResult>& v) {
 }  // namespace
 
 namespace {
+void processRows(std::ostream& o, const TBenchReport& r) {
+    if (r.process.empty()) return;
+    o << "\n**Whole rfir-slam processes** (`rfir-slam` on the simulated rawlog, "
+         "stock `slam_ps.ini`, every default output; the child's user + system CPU "
+         "and wall clock, fastest round; loading: `rfir-slam --version`)\n\n| log | M | "
+         "CPU s | wall s | loading CPU s |\n| --- | ---: | ---: | ---: | ---: |\n";
+    for (const auto& p : r.process)
+        o << "| " << p.log << " | " << p.M << " | " << num(p.cpuSeconds, 2) << " | "
+          << num(p.wallSeconds, 2) << " | " << num(p.startupCpuSeconds, 2) << " |\n";
+}
+
 void plainRows(std::ostream& o, const TBenchReport& r) {
     if (r.plain.empty()) return;
     o << "\n**Per step against the plain reference** (`plain_reference.cpp`; thread CPU "
@@ -87,6 +98,7 @@ std::string toMarkdown(const TBenchReport& r) {
           << " | " << num(x.slamWallSeconds, 2) << " | " << num(x.speedup, 0) << " | "
           << (x.plainSeconds > 0 ? num(x.plainSeconds, 2) : std::string("-")) << " |\n";
     plainRows(o, r);
+    processRows(o, r);
     o << "\n**Targets**\n\n| target | result | numbers |\n| --- | --- | --- |\n";
     for (const auto& t : r.targets)
         o << "| " << t.name << " | "

@@ -352,7 +352,7 @@ int runSlamApp(const TAppArgs& args) {
 
     const TTruth truth = loadTruth(a, data.info);
     const bool counts = cfg.method() != rfir::slam::TMethod::FastSLAM;
-    const auto errs = writeAndScore(
+    auto errs = writeAndScore(
         a, out, truth, run, "", cfg.slam.method,
         counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
                : "<tag or landmark> <id> <x> <y> <sx> <sy>");
@@ -361,10 +361,10 @@ int runSlamApp(const TAppArgs& args) {
     writeSettingsAndStats(out, cfg, run, a.seed, ini);
     out.commit();
     std::vector<rfir::eval::TEvalResult> rows;
-    if (errs) rows.push_back(*errs);
+    if (errs) rows.push_back(std::move(*errs));
     if (smoothed) {
         smoothed->odometry.reset();  // the odometry row is printed once
-        rows.push_back(*smoothed);
+        rows.push_back(std::move(*smoothed));
     }
     if (!rows.empty() && !a.quiet) std::cout << rfir::eval::formatErrorTable(rows);
     logStream(a) << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()

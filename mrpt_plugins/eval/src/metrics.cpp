@@ -94,6 +94,7 @@ namespace {
 void addTrajectoryMetrics(TRobotErrors& r) {
     r.alignment = alignPositions(r.pairs);
     std::vector<TPoseError> aligned;
+    aligned.reserve(r.pairs.size());
     for (const auto& p : r.pairs)
         aligned.push_back(poseError(p.t, r.alignment.apply(p.est), p.gt));
     r.aligned = statsOf(aligned);
@@ -112,6 +113,8 @@ TRobotErrors computeRobotErrors(const TPath2D& est, const TPath2D& gt,
     const TPath2D& samples = atTruth ? gt : est;
     const TPath2D& other = atTruth ? est : gt;
     TRobotErrors r;
+    r.perPose.reserve(samples.size());
+    r.pairs.reserve(samples.size());
     for (const auto& p : samples) {
         const auto q = interpolatePose(other, p.t);
         if (!q) {

@@ -26,10 +26,18 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
 }
 
 mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
-    std::vector<double> lw(m_particles.size());
-    for (size_t i = 0; i < lw.size(); i++) lw[i] = m_particles[i].log_w;
+    const size_t n = m_particles.size();
+    bool normalised = n > 0 && m_normLogW.size() == n;
+    for (size_t i = 0; normalised && i < n; i++)
+        normalised = m_particles[i].log_w == m_normLogW[i];
+    // Their largest log-weight is 0: exp(lw - 0) is the stored exp(lw).
+    if (normalised)
+        return weightedMeanPoseLinear(
+            n, [&](size_t i) { return m_normW[i]; },
+            [&](size_t i) -> const mrpt::poses::CPose2D& { return m_particles[i].d; });
+    // The weights are read in place: no copy of them per call (twice a step).
     return weightedMeanPose(
-        m_particles.size(), lw,
+        m_particles.size(), [&](size_t i) { return m_particles[i].log_w; },
         [&](size_t i) -> const mrpt::poses::CPose2D& { return m_particles[i].d; });
 }
 
@@ -60,9 +68,14 @@ double CRobotPoseParticles::normalizeWeights(double* out_max_log_w) {
     // The ESS in the same pass (one exp per particle): CParticleFilter asks
     // for it right after, and the resampling stage once more.
     double s1 = 0, s2 = 0;
-    for (auto& p : m_particles) {
+    m_normLogW.resize(m_particles.size());
+    m_normW.resize(m_particles.size());
+    for (size_t i = 0; i < m_particles.size(); i++) {
+        auto& p = m_particles[i];
         p.log_w -= maxW;
         const double w = std::exp(p.log_w);
+        m_normLogW[i] = p.log_w;
+        m_normW[i] = w;
         s1 += w;
         s2 += w * w;
     }

@@ -77,6 +77,10 @@ class CRobotPoseParticles
     IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
     double m_ess = -1;                 //!< ESS computed by normalizeWeights; < 0: stale
     std::vector<double> m_stepLogLik;  //!< this step's weighing terms
+    /** The last normalizeWeights' log-weights and their exp, which meanPose
+     * reuses while the particles still hold those log-weights (checked: a
+     * comparison per particle instead of an exp). */
+    std::vector<double> m_normLogW, m_normW;
 
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,

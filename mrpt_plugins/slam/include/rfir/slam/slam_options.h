@@ -51,6 +51,13 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
 template <class GetPose>
 mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
                                       GetPose get);
+/** The same, log-weight i given by `logw(i)`. */
+template <class GetLogW, class GetPose>
+mrpt::poses::CPose2D weightedMeanPose(size_t n, GetLogW logw, GetPose get);
+/** The same from linear weights `w(i)` (exp of the log-weight minus the
+ * largest one: the same arithmetic as the log forms). */
+template <class GetW, class GetPose>
+mrpt::poses::CPose2D weightedMeanPoseLinear(size_t n, GetW w, GetPose get);
 
 }  // namespace rfir::slam
 
@@ -59,11 +66,23 @@ namespace rfir::slam {
 template <class GetPose>
 mrpt::poses::CPose2D weightedMeanPose(size_t n, const std::vector<double>& logw,
                                       GetPose get) {
+    return weightedMeanPose(
+        n, [&](size_t i) { return logw[i]; }, get);
+}
+
+template <class GetLogW, class GetPose>
+mrpt::poses::CPose2D weightedMeanPose(size_t n, GetLogW logw, GetPose get) {
     double mx = -1e300;
-    for (size_t i = 0; i < n; i++) mx = std::max(mx, logw[i]);
+    for (size_t i = 0; i < n; i++) mx = std::max(mx, logw(i));
+    return weightedMeanPoseLinear(
+        n, [&](size_t i) { return std::exp(logw(i) - mx); }, get);
+}
+
+template <class GetW, class GetPose>
+mrpt::poses::CPose2D weightedMeanPoseLinear(size_t n, GetW weight, GetPose get) {
     double sw = 0, x = 0, y = 0, c = 0, s = 0;
     for (size_t i = 0; i < n; i++) {
-        const double w = std::exp(logw[i] - mx);
+        const double w = weight(i);
         const mrpt::poses::CPose2D& p = get(i);
         sw += w;
         x += w * p.x();

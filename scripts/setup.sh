@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 
 PKGS=(build-essential cmake git ccache libmrpt-dev mrpt-apps libeigen3-dev
       libgtest-dev googletest libbenchmark-dev zlib1g-dev
-      clang libclang-rt-14-dev)  # clang + libFuzzer: scripts/fuzz.sh
+      clang libclang-rt-14-dev    # clang + libFuzzer: scripts/fuzz.sh
+      clang-format)               # scripts/check_format.sh (.ci/run)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -245,9 +245,10 @@ TEST(Import, ExportIsStrictUnlessLossy) {
         FAIL();
     } catch (const std::runtime_error& e) {
         const std::string m = e.what();
-        EXPECT_NE(m.find(d / "x.rawlog: instant 1 (t 1): IR readings with nothing in view "
-                             "other than one per declared receiver"),
-                  std::string::npos)
+        EXPECT_NE(
+            m.find(d / "x.rawlog: instant 1 (t 1): IR readings with nothing in view "
+                       "other than one per declared receiver"),
+            std::string::npos)
             << m;
     }
     EXPECT_FALSE(fs::exists(d / "x.txt"));

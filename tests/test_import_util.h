@@ -29,7 +29,6 @@ namespace rfir_test {
 inline const std::string kFull =
     std::string(RFIR_SOURCE_DIR) + "/tests/data/textlog/full.txt";
 
-
 inline std::string slurp(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     std::ostringstream s;

@@ -4,8 +4,7 @@
 
 using namespace rfir::ir;
 
-TEST(IRCodes, IdsAndCounts)
-{
+TEST(IRCodes, IdsAndCounts) {
     EXPECT_EQ(emitterIdFromCodes({3, 9}), "39");
     EXPECT_EQ(*codesFromEmitterId("39"), (std::vector<uint8_t>{3, 9}));
     EXPECT_FALSE(codesFromEmitterId("93"));

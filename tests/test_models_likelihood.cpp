@@ -1,7 +1,7 @@
 // Likelihood values computed by hand, resampling and INI key checks.
-#include <rfir/models/random.h>
 #include <rfir/models/detection_likelihood.h>
 #include <rfir/models/ini_reader.h>
+#include <rfir/models/random.h>
 #include <rfir/models/range_bearing.h>
 #include <rfir/models/resampling.h>
 

@@ -10,8 +10,7 @@
 using namespace rfir::obs;
 
 template <class T>
-typename T::Ptr roundTrip(const T& o)
-{
+typename T::Ptr roundTrip(const T& o) {
     mrpt::io::CMemoryStream buf;
     auto ar = mrpt::serialization::archiveFrom(buf);
     ar << o;
@@ -22,8 +21,7 @@ typename T::Ptr roundTrip(const T& o)
     return out;
 }
 
-TEST(Observations, RFIDRoundTrip)
-{
+TEST(Observations, RFIDRoundTrip) {
     CObservationRFIDReaders o;
     o.timestamp = mrpt::Clock::fromDouble(12.5);
     o.sensorLabel = "RFID";
@@ -43,8 +41,7 @@ TEST(Observations, RFIDRoundTrip)
     EXPECT_EQ(b->detectionCount(), 2u);
 }
 
-TEST(Observations, IRRoundTripWithRaw)
-{
+TEST(Observations, IRRoundTripWithRaw) {
     CObservationIRSignals o;
     o.timestamp = mrpt::Clock::fromDouble(3.25);
     CObservationIRSignals::TReading r;
@@ -60,8 +57,7 @@ TEST(Observations, IRRoundTripWithRaw)
     EXPECT_EQ(b->readings[0].emitterId(), "39");
 }
 
-TEST(Observations, HeaderRoundTrip)
-{
+TEST(Observations, HeaderRoundTrip) {
     CObservationLogHeader h;
     h.readers = {{"R1", 0.1, 0.0, 0.03, 0.03}};
     h.receivers = {{"left", 0, 0.1, 0.3}};

@@ -9,34 +9,30 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace rfir::sim;
 using mrpt::poses::CPose2D;
 
-namespace
-{
-std::string slurp(const fs::path& p)
-{
+namespace {
+std::string slurp(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
 /** This process's folder, removed when it ends. */
-const fs::path& procDir()
-{
+const fs::path& procDir() {
     static const rfir_test::TmpDir d;
     return d.p;
 }
 
-fs::path runTo(const TSimConfig& c, uint64_t seed, const std::string& sub)
-{
+fs::path runTo(const TSimConfig& c, uint64_t seed, const std::string& sub) {
     const auto dir = procDir() / sub;
     fs::remove_all(dir);
     fs::create_directories(dir);
@@ -44,8 +40,7 @@ fs::path runTo(const TSimConfig& c, uint64_t seed, const std::string& sub)
     return dir;
 }
 
-TSimConfig shortMixed()
-{
+TSimConfig shortMixed() {
     TSimConfig c;
     c.rb.enabled = true;
     c.ir.enabled = true;
@@ -54,12 +49,10 @@ TSimConfig shortMixed()
 }
 }  // namespace
 
-TEST(SimOutputs, SameSeedSameBytesOtherSeedDiffers)
-{
+TEST(SimOutputs, SameSeedSameBytesOtherSeedDiffers) {
     const auto c = shortMixed();
     const auto a = runTo(c, 11, "a"), b = runTo(c, 11, "b"), d = runTo(c, 12, "d");
-    for (const char* f : {"run.rawlog", "run.gt.tum", "run.gt_map.txt"})
-    {
+    for (const char* f : {"run.rawlog", "run.gt.tum", "run.gt_map.txt"}) {
         const auto x = slurp(a / f);
         ASSERT_FALSE(x.empty()) << f;
         EXPECT_EQ(x, slurp(b / f)) << f;
@@ -68,8 +61,7 @@ TEST(SimOutputs, SameSeedSameBytesOtherSeedDiffers)
     EXPECT_NE(slurp(a / "run.gt_map.txt"), slurp(d / "run.gt_map.txt"));
 }
 
-TEST(SimOutputs, RawlogReadsBackWithGroundTruth)
-{
+TEST(SimOutputs, RawlogReadsBackWithGroundTruth) {
     auto c = shortMixed();
     c.trajectory.spots = 50;  // one every 0.72 m: a few within the 15 s
     const auto out = simulate(c, 13);
@@ -85,8 +77,7 @@ TEST(SimOutputs, RawlogReadsBackWithGroundTruth)
     EXPECT_GT(c.startTime, 0);
     rfir::common::TRawlogStep s;
     size_t n = 0, withIR = 0, withRB = 0;
-    while (rd.next(s))
-    {
+    while (rd.next(s)) {
         const auto& e = out.steps[n];
         EXPECT_NEAR(s.t, e.t, 1e-6);
         // IR and RB observations only when something is in view.
@@ -108,11 +99,9 @@ TEST(SimOutputs, RawlogReadsBackWithGroundTruth)
               out.spots.size());
 }
 
-TEST(SimTrajectory, ShapesStayInsideAndKeepTheSpeed)
-{
+TEST(SimTrajectory, ShapesStayInsideAndKeepTheSpeed) {
     std::vector<std::array<double, 3>> shapes;  // length, mean x, mean y
-    for (int k = 1; k <= 5; k++)
-    {
+    for (int k = 1; k <= 5; k++) {
         TSimConfig c;
         c.trajectory.kind = TTrajectoryConfig::Kind::Predefined;
         c.trajectory.predefined = k;
@@ -120,8 +109,7 @@ TEST(SimTrajectory, ShapesStayInsideAndKeepTheSpeed)
         c.trajectory.speed = 0.3;
         const auto out = simulate(c, 1);
         double len = 0, mx = 0, my = 0;
-        for (size_t i = 0; i < out.steps.size(); i++)
-        {
+        for (size_t i = 0; i < out.steps.size(); i++) {
             const auto& p = out.steps[i].truePose;
             mx += p.x() / out.steps.size(), my += p.y() / out.steps.size();
             EXPECT_GE(p.x(), 0.5 - 1e-9);
@@ -135,7 +123,8 @@ TEST(SimTrajectory, ShapesStayInsideAndKeepTheSpeed)
             len += d;
         }
         // Closed shapes come back to the start.
-        EXPECT_NEAR(out.steps.back().truePose.distanceTo(out.steps[0].truePose), 0, 0.031);
+        EXPECT_NEAR(out.steps.back().truePose.distanceTo(out.steps[0].truePose), 0,
+                    0.031);
         for (const auto& [l, x, y] : shapes)  // five distinct shapes
             EXPECT_GT(std::abs(l - len) + std::abs(x - mx) + std::abs(y - my), 0.2)
                 << "shape " << k;
@@ -143,15 +132,13 @@ TEST(SimTrajectory, ShapesStayInsideAndKeepTheSpeed)
     }
 }
 
-TEST(SimTrajectory, FollowRotationFacesTheMotion)
-{
+TEST(SimTrajectory, FollowRotationFacesTheMotion) {
     TSimConfig c;
     c.trajectory.rotation = TTrajectoryConfig::Rotation::Follow;
     c.trajectory.laps = 1;
     const auto out = simulate(c, 1);
     size_t moving = 0;
-    for (size_t i = 1; i < out.steps.size(); i++)
-    {
+    for (size_t i = 1; i < out.steps.size(); i++) {
         const auto inc = out.steps[i].truePose - out.steps[i - 1].truePose;
         if (std::abs(inc.phi()) > 1e-12) continue;  // turning at a corner
         EXPECT_NEAR(inc.y(), 0, 1e-9);  // moves straight ahead in its own frame
@@ -161,15 +148,13 @@ TEST(SimTrajectory, FollowRotationFacesTheMotion)
     EXPECT_GT(moving, 500u);
 }
 
-TEST(SimTrajectory, SpotsAreStops)
-{
+TEST(SimTrajectory, SpotsAreStops) {
     TSimConfig c;
     c.trajectory.spots = 70;
     c.trajectory.spotPause = 1.0;
     const auto out = simulate(c, 1);
     ASSERT_EQ(out.spots.size(), 70u);
-    for (const auto& sp : out.spots)
-    {
+    for (const auto& sp : out.spots) {
         // The robot stands still for the whole pause around the spot time.
         const size_t k = size_t(std::lround((sp.t - c.startTime) / c.dt));
         for (size_t j = k - 3; j <= k + 3; j++)
@@ -177,10 +162,8 @@ TEST(SimTrajectory, SpotsAreStops)
     }
 }
 
-TEST(SimKidnap, JumpInTruthNotInOdometry)
-{
-    for (auto mode : {TKidnapConfig::Odometry::Frozen, TKidnapConfig::Odometry::Stop})
-    {
+TEST(SimKidnap, JumpInTruthNotInOdometry) {
+    for (auto mode : {TKidnapConfig::Odometry::Frozen, TKidnapConfig::Odometry::Stop}) {
         TSimConfig c;
         c.kidnap.enabled = true;
         c.kidnap.time = 100;
@@ -201,8 +184,7 @@ TEST(SimKidnap, JumpInTruthNotInOdometry)
                     0.2 * 0.1 + 1e-9);
         // Odometry: no jump while carried, nor when put down.
         const auto before = *out.steps[k0 - 1].odometry;
-        for (size_t k = k0; k < k1; k++)
-        {
+        for (size_t k = k0; k < k1; k++) {
             if (mode == TKidnapConfig::Odometry::Stop)
                 EXPECT_FALSE(out.steps[k].odometry.has_value());
             else
@@ -216,8 +198,7 @@ TEST(SimKidnap, JumpInTruthNotInOdometry)
     }
 }
 
-TEST(SimOdometry, NoiseStatisticsMatchTheModel)
-{
+TEST(SimOdometry, NoiseStatisticsMatchTheModel) {
     TSimConfig c;
     c.trajectory.kind = TTrajectoryConfig::Kind::Random;
     c.trajectory.rotation = TTrajectoryConfig::Rotation::Spin;
@@ -227,13 +208,13 @@ TEST(SimOdometry, NoiseStatisticsMatchTheModel)
     const auto out = simulate(c, 31);
     double sx = 0, sy = 0, sp = 0;
     size_t n = 0;
-    for (size_t i = 1; i < out.steps.size(); i++)
-    {
+    for (size_t i = 1; i < out.steps.size(); i++) {
         const auto t = out.steps[i].truePose - out.steps[i - 1].truePose;
         const auto o = *out.steps[i].odometry - *out.steps[i - 1].odometry;
         const double d = std::hypot(t.x(), t.y());
         if (d < 1e-6) continue;
-        const double sphi = std::sqrt(0.02 * 0.02 * std::abs(t.phi()) + 0.005 * 0.005 * d);
+        const double sphi =
+            std::sqrt(0.02 * 0.02 * std::abs(t.phi()) + 0.005 * 0.005 * d);
         sx += std::pow((o.x() - t.x()) / (0.01 * std::sqrt(d)), 2);
         sy += std::pow((o.y() - t.y()) / (0.01 * std::sqrt(d)), 2);
         sp += std::pow(mrpt::math::wrapToPi(o.phi() - t.phi()) / sphi, 2);
@@ -246,21 +227,20 @@ TEST(SimOdometry, NoiseStatisticsMatchTheModel)
     EXPECT_NEAR(std::sqrt(sp / n), 1, 0.05);
 }
 
-TEST(SimOdometry, BiasesAreSystematic)
-{
+TEST(SimOdometry, BiasesAreSystematic) {
     TSimConfig c;
     c.trajectory.rotation = TTrajectoryConfig::Rotation::Follow;
     c.odometry = {0, 0, 0, 0.02, 0.02, 0.01};
     c.maxDuration = 60;
     const auto out = simulate(c, 41);
     EXPECT_NE(out.scaleBias, 0);
-    for (size_t i = 1; i < out.steps.size(); i++)
-    {
+    for (size_t i = 1; i < out.steps.size(); i++) {
         const auto t = out.steps[i].truePose - out.steps[i - 1].truePose;
         const auto o = *out.steps[i].odometry - *out.steps[i - 1].odometry;
         const double d = std::hypot(t.x(), t.y());
         EXPECT_NEAR(o.x(), (1 + out.scaleBias) * t.x(), 1e-9);
         EXPECT_NEAR(o.y(), (1 + out.scaleBias) * t.y(), 1e-9);
-        EXPECT_NEAR(o.phi(), (1 + out.rotScaleBias) * t.phi() + out.headingDrift * d, 1e-9);
+        EXPECT_NEAR(o.phi(), (1 + out.rotScaleBias) * t.phi() + out.headingDrift * d,
+                    1e-9);
     }
 }

@@ -10,9 +10,9 @@
 #include <rfir/models/detection_likelihood.h>
 #include <rfir/models/range_bearing.h>
 
-#include <cmath>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/poses/CPose2D.h>
+#include <cmath>
 
 using namespace tagmaps_test;
 using rfir::maps::CRFIDTagParticleMap;
@@ -28,9 +28,8 @@ double termByHand(const CRFIDTagParticleMap& m, const CRFIDTagParticleMap::TRobo
     if (r.rangeBearing) {
         const auto sensor =
             (p + mrpt::poses::CPose2D(r.sensorX, r.sensorY, r.sensorYaw)).asTPose();
-        return rfir::models::rangeBearingLogLikelihood(sensor, rd.est->mean, rd.range,
-                                                       rd.yaw,
-                                                       m.likelihoodOptions.rangeBearing);
+        return rfir::models::rangeBearingLogLikelihood(
+            sensor, rd.est->mean, rd.range, rd.yaw, m.likelihoodOptions.rangeBearing);
     }
     const rfir::models::DetectionLikelihood det(m.likelihoodOptions.detection);
     if (m.likelihoodOptions.robotLikelihood == TRobotLikelihood::TagMean ||
@@ -67,8 +66,10 @@ size_t knownReads(const CRFIDTagParticleMap& m, const mrpt::obs::CObservation& o
     if (const auto* f = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&o)) {
         for (const auto& rd : f->readings)
             for (const auto& id : rd.tags) n += m.getTag(id) ? 1 : 0;
-    } else if (const auto* b = dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&o)) {
-        for (const auto& z : b->sensedData) n += m.getLandmark(m.landmarkName(z.landmarkID)) ? 1 : 0;
+    } else if (const auto* b =
+                   dynamic_cast<const mrpt::obs::CObservationBearingRange*>(&o)) {
+        for (const auto& z : b->sensedData)
+            n += m.getLandmark(m.landmarkName(z.landmarkID)) ? 1 : 0;
     }
     return n;
 }

@@ -3,13 +3,13 @@
 // text reader; a directory given as a file is named as such.
 #include "test_tmpdir.h"
 
-#include <rfir/localize/localize_config.h>
 #include <rfir/common/log_convert.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/text_input.h>
 #include <rfir/common/textlog.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/ir/emitter_set.h>
+#include <rfir/localize/localize_config.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_config.h>
 

@@ -3,10 +3,8 @@
 
 #include <stdexcept>
 
-namespace rfir::ir
-{
-double codeFrequencyHz(int code)
-{
+namespace rfir::ir {
+double codeFrequencyHz(int code) {
     static const double kHz[kNumCodes] = {100, 150, 250, 350, 550, 650, 850, 950, 1150};
     if (code < 1 || code > kNumCodes)
         throw std::out_of_range("IR frequency code must be 1..9, got " +
@@ -14,19 +12,16 @@ double codeFrequencyHz(int code)
     return kHz[code - 1];
 }
 
-static bool validAscending(const std::vector<uint8_t>& c)
-{
+static bool validAscending(const std::vector<uint8_t>& c) {
     if (c.empty()) return false;
-    for (size_t i = 0; i < c.size(); i++)
-    {
+    for (size_t i = 0; i < c.size(); i++) {
         if (c[i] < 1 || c[i] > kNumCodes) return false;
         if (i && c[i] <= c[i - 1]) return false;
     }
     return true;
 }
 
-std::string emitterIdFromCodes(const std::vector<uint8_t>& codes)
-{
+std::string emitterIdFromCodes(const std::vector<uint8_t>& codes) {
     if (!validAscending(codes))
         throw std::invalid_argument("IR codes must be a non-empty ascending set of 1..9");
     std::string s;
@@ -34,11 +29,9 @@ std::string emitterIdFromCodes(const std::vector<uint8_t>& codes)
     return s;
 }
 
-std::optional<std::vector<uint8_t>> codesFromEmitterId(const std::string& id)
-{
+std::optional<std::vector<uint8_t>> codesFromEmitterId(const std::string& id) {
     std::vector<uint8_t> c;
-    for (char ch : id)
-    {
+    for (char ch : id) {
         if (ch < '1' || ch > '9') return std::nullopt;
         c.push_back(uint8_t(ch - '0'));
     }
@@ -46,14 +39,13 @@ std::optional<std::vector<uint8_t>> codesFromEmitterId(const std::string& id)
     return c;
 }
 
-std::optional<std::vector<uint8_t>> parseCodeList(const std::string& s)
-{
+std::optional<std::vector<uint8_t>> parseCodeList(const std::string& s) {
     std::vector<uint8_t> c;
     size_t i = 0;
-    while (i <= s.size())
-    {
+    while (i <= s.size()) {
         const size_t j = s.find(',', i);
-        const std::string tok = s.substr(i, j == std::string::npos ? std::string::npos : j - i);
+        const std::string tok =
+            s.substr(i, j == std::string::npos ? std::string::npos : j - i);
         if (tok.size() != 1 || tok[0] < '1' || tok[0] > '9') return std::nullopt;
         c.push_back(uint8_t(tok[0] - '0'));
         if (j == std::string::npos) break;
@@ -63,23 +55,19 @@ std::optional<std::vector<uint8_t>> parseCodeList(const std::string& s)
     return c;
 }
 
-std::string formatCodeList(const std::vector<uint8_t>& codes)
-{
+std::string formatCodeList(const std::vector<uint8_t>& codes) {
     std::string s;
-    for (size_t i = 0; i < codes.size(); i++)
-    {
+    for (size_t i = 0; i < codes.size(); i++) {
         if (i) s += ',';
         s += std::to_string(int(codes[i]));
     }
     return s;
 }
 
-uint64_t countIds(int n, int k)
-{
+uint64_t countIds(int n, int k) {
     if (n < 0 || k < 0) throw std::invalid_argument("countIds: negative argument");
     uint64_t total = 0, c = 1;  // c = C(n, i)
-    for (int i = 1; i <= k && i <= n; i++)
-    {
+    for (int i = 1; i <= k && i <= n; i++) {
         c = c * uint64_t(n - i + 1) / uint64_t(i);
         total += c;
     }

@@ -142,7 +142,8 @@ void addDarkReceivers(const CObservationLogHeader& hdr, CObservationIRSignals& i
     const size_t n = ir.readings.size();
     for (const auto& rc : hdr.receivers) {
         bool named = false;
-        for (size_t i = 0; i < n && !named; i++) named = ir.readings[i].receiver.id == rc.id;
+        for (size_t i = 0; i < n && !named; i++)
+            named = ir.readings[i].receiver.id == rc.id;
         if (named) continue;
         CObservationIRSignals::TReading rd;
         rd.receiver = rc;

@@ -7,8 +7,8 @@
 #include <rfir/common/rawlog_io.h>
 
 #include <mrpt/math/wrap2pi.h>
-#include <mrpt/serialization/CArchive.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
 #include <map>

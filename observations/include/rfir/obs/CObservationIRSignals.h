@@ -8,16 +8,13 @@
 #include <string>
 #include <vector>
 
-namespace rfir::obs
-{
+namespace rfir::obs {
 /** One IR photodiode receiver on the robot (robot frame, z = height above the
  * floor, metres). */
-struct TIRReceiver
-{
+struct TIRReceiver {
     std::string id;
     double x = 0, y = 0, z = 0;
-    bool operator==(const TIRReceiver& o) const
-    {
+    bool operator==(const TIRReceiver& o) const {
         return id == o.id && x == o.x && y == o.y && z == o.z;
     }
 };
@@ -25,30 +22,29 @@ struct TIRReceiver
 /** What each receiver saw at one instant: the decoded frequency codes (1..9,
  * ascending), the amplified voltage, and optionally the raw sampled window it
  * was decoded from. */
-class CObservationIRSignals : public mrpt::obs::CObservation
-{
+class CObservationIRSignals : public mrpt::obs::CObservation {
     DEFINE_SERIALIZABLE(CObservationIRSignals, rfir::obs)
 
-public:
-    struct TReading
-    {
+  public:
+    struct TReading {
         TIRReceiver receiver;
         std::vector<uint8_t> codes;  //!< ascending, 1..9; empty: nothing in view
         double volts = 0;
-        double rateHz = 0;           //!< > 0 only when raw samples are kept
-        std::vector<float> raw;      //!< raw sampled voltage window (optional)
+        double rateHz = 0;       //!< > 0 only when raw samples are kept
+        std::vector<float> raw;  //!< raw sampled voltage window (optional)
         bool hasRaw() const { return rateHz > 0 && !raw.empty(); }
         /** Emitter ID formed by the codes ("39" for codes 3 and 9). */
         std::string emitterId() const;
-        bool operator==(const TReading& o) const
-        {
+        bool operator==(const TReading& o) const {
             return receiver == o.receiver && codes == o.codes && volts == o.volts &&
                    rateHz == o.rateHz && raw == o.raw;
         }
     };
     std::vector<TReading> readings;
 
-    void getSensorPose(mrpt::poses::CPose3D& p) const override { p = mrpt::poses::CPose3D(); }
+    void getSensorPose(mrpt::poses::CPose3D& p) const override {
+        p = mrpt::poses::CPose3D();
+    }
     void setSensorPose(const mrpt::poses::CPose3D&) override {}
     using mrpt::obs::CObservation::getSensorPose;
     using mrpt::obs::CObservation::setSensorPose;

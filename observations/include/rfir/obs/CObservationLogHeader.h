@@ -11,15 +11,12 @@
 #include <string>
 #include <vector>
 
-namespace rfir::obs
-{
+namespace rfir::obs {
 /** Range-and-bearing sensor on the robot (textlog `rb_sensor`). */
-struct TRBSensor
-{
+struct TRBSensor {
     double x = 0, y = 0, yaw = 0;
     double maxRange = 0.5, fov = 2.0943951023931953;  //!< fov: full angle, rad
-    bool operator==(const TRBSensor& o) const
-    {
+    bool operator==(const TRBSensor& o) const {
         return x == o.x && y == o.y && yaw == o.yaw && maxRange == o.maxRange &&
                fov == o.fov;
     }
@@ -29,11 +26,10 @@ struct TRBSensor
  * the optional start pose, so that a SLAM run needs no retyping. Range-and-
  * bearing landmark IDs are strings in the text format; CObservationBearingRange
  * stores int32 IDs, which index `rbLandmarkNames`. */
-class CObservationLogHeader : public mrpt::obs::CObservation
-{
+class CObservationLogHeader : public mrpt::obs::CObservation {
     DEFINE_SERIALIZABLE(CObservationLogHeader, rfir::obs)
 
-public:
+  public:
     std::vector<TRFIDReader> readers;
     std::vector<TIRReceiver> receivers;
     std::optional<TRBSensor> rbSensor;
@@ -44,7 +40,9 @@ public:
      * the ID is not in the table). */
     std::string landmarkName(int32_t id) const;
 
-    void getSensorPose(mrpt::poses::CPose3D& p) const override { p = mrpt::poses::CPose3D(); }
+    void getSensorPose(mrpt::poses::CPose3D& p) const override {
+        p = mrpt::poses::CPose3D();
+    }
     void setSensorPose(const mrpt::poses::CPose3D&) override {}
     using mrpt::obs::CObservation::getSensorPose;
     using mrpt::obs::CObservation::setSensorPose;

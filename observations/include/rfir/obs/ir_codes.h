@@ -6,8 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace rfir::ir
-{
+namespace rfir::ir {
 /** Number of on-off-keying frequencies of the seeds' emitters. */
 constexpr int kNumCodes = 9;
 /** Frequency in Hz of code c (1..9): 100, 150, 250, 350, 550, 650, 850, 950, 1150. */
@@ -18,7 +17,9 @@ std::string emitterIdFromCodes(const std::vector<uint8_t>& codes);
  * (digits 1..9, strictly ascending, non-empty). */
 std::optional<std::vector<uint8_t>> codesFromEmitterId(const std::string& id);
 /** A repeated-ID emitter sends one code only. */
-inline bool isRepeatedId(const std::vector<uint8_t>& codes) { return codes.size() == 1; }
+inline bool isRepeatedId(const std::vector<uint8_t>& codes) {
+    return codes.size() == 1;
+}
 /** Parses "3,9" (textlog `codes` field); nullopt if malformed or not ascending. */
 std::optional<std::vector<uint8_t>> parseCodeList(const std::string& s);
 /** "3,9" */

@@ -5,8 +5,7 @@
 #include <ostream>
 #include <string>
 
-namespace rfir::common
-{
+namespace rfir::common {
 /** Writes `path` through `fill` into "<path>.tmp.<pid>", then renames it over
  * `path`. If `fill` throws or the stream fails, the temporary file is removed,
  * `path` is left untouched and std::runtime_error names the file. */

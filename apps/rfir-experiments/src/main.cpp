@@ -7,6 +7,7 @@
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>
 #include <rfir/common/install_paths.h>
+#include <rfir/common/text_input.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/filesystem.h>
@@ -84,14 +85,9 @@ TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds, const TSetup& s
 void writeOutputs(const std::string& out, const std::vector<TRowResults>& results,
                   const TMeta& meta, const std::string& notesFile, bool figures,
                   bool quiet) {
-    std::string notes;
-    if (!notesFile.empty()) {
-        std::ifstream f(notesFile);
-        if (!f) throw std::runtime_error("cannot read --notes '" + notesFile + "'");
-        std::stringstream ss;
-        ss << f.rdbuf();
-        notes = ss.str();
-    }
+    const std::string notes = notesFile.empty()
+                                  ? std::string()
+                                  : rfir::common::readSmallTextFile(notesFile, "--notes");
     if (figures)
         for (const auto& r : results) writeFigures(out, r);
     writeJson(out + "/results.json", results, meta);

@@ -7,6 +7,7 @@
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>
 #include <rfir/common/install_paths.h>
+#include <rfir/common/text_input.h>
 #include <rfir/maps/CIREmitterMap.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -24,13 +25,6 @@ namespace fs = std::filesystem;
 using namespace rfir::irexp;
 
 namespace {
-std::string slurp(const std::string& p) {
-    std::ifstream f(p);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
 /** --only: the experiments asked for (empty: all); an unknown name is refused. */
 std::set<std::string> onlyList(const std::string& list) {
     static const std::set<std::string> known = {
@@ -142,7 +136,8 @@ int main(int argc, char** argv) {
         if (on("assoc")) md += expAssociation(s, o);
         if (on("particles")) md += expParticles(s, o);
         if (on("raw")) md += expRawAndDecoder(s, o);
-        if (notes.isSet()) md += slurp(notes.getValue());
+        if (notes.isSet())
+            md += rfir::common::readSmallTextFile(notes.getValue(), "--notes");
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         md += "\n---\nRun time: " + fmt(secs / 60, 1) + " min.\n";

@@ -29,3 +29,9 @@ if(TARGET rfir_sim)
     SOURCES test_slam_robust.cpp
     LIBS rfir_slam rfir_sim rfir_eval)
 endif()
+if(TARGET rfir_sim)
+  # The smoother after a kidnapping, with empty polls, on the fault INIs.
+  rfir_add_test(test_graph_smoother_robust
+    SOURCES test_graph_smoother_robust.cpp
+    LIBS rfir_slam rfir_sim rfir_eval)
+endif()

@@ -172,7 +172,8 @@ TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
 }
 
 std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
-                      uint64_t seed, const std::string& identity) {
+                      uint64_t seed, const std::string& identity,
+                      const std::string& smoother) {
     size_t tags = 0, lms = 0;
     for (const auto& l : run.map) (l.isTag ? tags : lms)++;
     std::ostringstream o;
@@ -186,7 +187,7 @@ std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSla
       << ", \"kidnap_reset_times_s\": [";
     for (size_t k = 0; k < run.resetTimes.size(); k++)
         o << (k ? ", " : "") << run.resetTimes[k];
-    o << "], \"run\": " << identity << "}\n";
+    o << "]" << smoother << ", \"run\": " << identity << "}\n";
     return o.str();
 }
 
@@ -198,7 +199,7 @@ const std::vector<std::string> kOutputPatterns = {
 void writeSettingsAndStats(rfir::common::COutputFolder& out,
                            const rfir::slam::TSlamConfig& cfg,
                            const rfir::slam::TSlamRun& run, uint64_t seed,
-                           const std::string& ini) {
+                           const std::string& ini, const std::string& smoother) {
     const std::string settingsPath = out.file("settings.ini");
     const std::string statsPath = out.file("stats.json");
     const auto files = out.files();
@@ -212,8 +213,9 @@ void writeSettingsAndStats(rfir::common::COutputFolder& out,
                                  "\n" + rfir::slam::dumpSlamConfig(cfg);
     rfir::common::writeFileAtomically(settingsPath,
                                       [&](std::ostream& o) { o << settings; });
-    rfir::common::writeFileAtomically(
-        statsPath, [&](std::ostream& o) { o << statsJson(cfg, run, seed, id); });
+    rfir::common::writeFileAtomically(statsPath, [&](std::ostream& o) {
+        o << statsJson(cfg, run, seed, id, smoother);
+    });
 }
 
 /** Ground truth beside the rawlog unless given. */
@@ -292,14 +294,33 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(
 std::optional<rfir::eval::TEvalResult> smoothAndWrite(
     const TAppArgs& a, rfir::common::COutputFolder& out,
     const rfir::slam::TSlamConfig& cfg, const TLoaded& data, const TTruth& truth,
-    const mrpt::poses::CPose2D& start, const rfir::slam::TSlamRun& run) {
-    rfir::slam::TGraphSmootherParams p;
-    p.motion = cfg.motion;
-    logStream(a) << "rfir-slam: smoothing " << run.path.size() << " poses offline\n";
+    const mrpt::poses::CPose2D& start, const rfir::slam::TSlamRun& run,
+    std::string& stats) {
+    const auto p = rfir::slam::smootherParams(cfg);
+    logStream(a) << "rfir-slam: smoothing " << run.path.size() << " poses offline ("
+                 << p.options.solver << ")\n";
     const auto res = rfir::slam::smoothRun(data.inputs, start, run, p);
-    logStream(a) << "rfir-slam: smoothed in " << res.iterations << " iterations ("
-                 << res.reads << " reads; cost " << res.initialCost << " -> "
+    logStream(a) << "rfir-slam: smoothed in " << res.iterations << " iterations, "
+                 << res.seconds << " s (" << res.reads << " reads, " << res.negatives
+                 << " polls without the tag; cost " << res.initialCost << " -> "
                  << res.finalCost << ")\n";
+    std::ostringstream o, cuts;
+    o << std::setprecision(9);
+    for (size_t k = 0; k < res.cutTimes.size(); k++) {
+        cuts << (k ? ", " : "") << res.cutTimes[k];
+        logStream(a) << "rfir-slam: smoother cut the odometry at t = " << res.cutTimes[k]
+                     << " s (kidnapping)\n";
+    }
+    logStream(a) << "rfir-slam: odometry systematic error: translation scale "
+                 << res.odometryScale << ", heading drift " << res.headingDriftPerMetre
+                 << " rad/m\n";
+    o << ", \"smoother\": {\"solver\": \"" << p.options.solver
+      << "\", \"iterations\": " << res.iterations << ", \"time_s\": " << res.seconds
+      << ", \"reads\": " << res.reads << ", \"negative_reads\": " << res.negatives
+      << ", \"odometry_scale\": " << res.odometryScale
+      << ", \"heading_drift_rad_per_m\": " << res.headingDriftPerMetre
+      << ", \"odometry_cut_times_s\": [" << cuts.str() << "]}";
+    stats = o.str();
     return writeAndScore(a, out, truth, res.run, "_smoothed",
                          cfg.slam.method + " smoothed", "<tag> <id> <x> <y> <sx> <sy>");
 }
@@ -357,8 +378,10 @@ int runSlamApp(const TAppArgs& args) {
         counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
                : "<tag or landmark> <id> <x> <y> <sx> <sy>");
     std::optional<rfir::eval::TEvalResult> smoothed;
-    if (a.smooth) smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run);
-    writeSettingsAndStats(out, cfg, run, a.seed, ini);
+    std::string smootherStats;
+    if (a.smooth)
+        smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run, smootherStats);
+    writeSettingsAndStats(out, cfg, run, a.seed, ini, smootherStats);
     out.commit();
     std::vector<rfir::eval::TEvalResult> rows;
     if (errs) rows.push_back(std::move(*errs));

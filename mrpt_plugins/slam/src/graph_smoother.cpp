@@ -1,5 +1,8 @@
 /* rfir: Gauss-Newton (Levenberg-Marquardt damped) smoothing of a SLAM run over
- * odometry and RFID read factors; see graph_smoother.h. */
+ * odometry and Gaussian RFID read factors ([smoother] solver = lm), the tags'
+ * marginal stds of both solvers, and smoothRun's dispatch; see graph_smoother.h. */
+#include "graph_smoother_internal.h"
+
 #include <rfir/models/detection_likelihood.h>
 #include <rfir/models/odometry_noise.h>
 #include <rfir/slam/detections.h>
@@ -11,6 +14,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -177,14 +181,46 @@ class CProblem {
     std::vector<size_t> firstRead_;
     std::unordered_map<std::string, size_t> tagIndex_;
 };
+
+/** The tag diagonal of H^-1, one solve per column. */
+void marginals(const CProblem& pb, const TState& s, std::vector<TLandmarkOut>& map) {
+    const int n = int(pb.dim());
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::VectorXd g;
+    pb.linearize(s, &trip, &g);
+    Eigen::SparseMatrix<double> H(n, n);
+    H.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+    solver.compute(H);
+    std::unordered_map<std::string, TLandmarkOut*> out;
+    for (auto& l : map) out[l.id] = &l;
+    for (size_t j = 0; j < pb.tagIds().size(); j++) {
+        const auto it = out.find(pb.tagIds()[j]);
+        if (it == out.end()) continue;
+        const size_t v = pb.tagVar(j);
+        for (int a = 0; a < 2; a++) {
+            Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
+            e[v + a] = 1;
+            const double var =
+                solver.info() == Eigen::Success ? solver.solve(e)[v + a] : 0;
+            (a ? it->second->sy : it->second->sx) = std::sqrt(std::max(0.0, var));
+        }
+    }
+}
 }  // namespace
 
-TGraphSmootherResult smoothRun(const std::vector<TSlamInput>& inputs,
-                               const mrpt::poses::CPose2D& start,
-                               const TSlamRun& filtered,
-                               const TGraphSmootherParams& params) {
-    if (filtered.path.size() != inputs.size())
-        throw std::invalid_argument("smoothRun: the path needs one pose per input");
+namespace detail {
+void gaussianMarginalStds(const std::vector<TSlamInput>& inputs,
+                          const mrpt::poses::CPose2D& start,
+                          const TGraphSmootherParams& params, TSlamRun& run) {
+    const CProblem pb(inputs, start, params);
+    marginals(pb, pb.initial(run.path, run.map), run.map);
+}
+
+TGraphSmootherResult smoothRunLM(const std::vector<TSlamInput>& inputs,
+                                 const mrpt::poses::CPose2D& start,
+                                 const TSlamRun& filtered,
+                                 const TGraphSmootherParams& params) {
     const CProblem pb(inputs, start, params);
     TState s = pb.initial(filtered.path, filtered.map);
     TGraphSmootherResult res;
@@ -226,30 +262,40 @@ TGraphSmootherResult smoothRun(const std::vector<TSlamInput>& inputs,
         res.run.path[k].second = mrpt::poses::CPose2D(
             s.x[3 * k], s.x[3 * k + 1], mrpt::math::wrapToPi(s.x[3 * k + 2]));
     res.run.map.clear();
-    // Marginal stds of the tags: the tag diagonal of H^-1 at the final state
-    // (H above was linearised before the last accepted step), one solve per column.
-    {
-        std::vector<Eigen::Triplet<double>> trip;
-        Eigen::VectorXd g;
-        pb.linearize(s, &trip, &g);
-        H.setFromTriplets(trip.begin(), trip.end());
-    }
-    solver.compute(H);
     for (size_t j = 0; j < pb.tagIds().size(); j++) {
         TLandmarkOut l;
         l.id = pb.tagIds()[j];
-        const size_t v = pb.tagVar(j);
-        l.x = s.x[v];
-        l.y = s.x[v + 1];
-        for (int a = 0; a < 2; a++) {
-            Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
-            e[v + a] = 1;
-            const double var =
-                solver.info() == Eigen::Success ? solver.solve(e)[v + a] : 0;
-            (a ? l.sy : l.sx) = std::sqrt(std::max(0.0, var));
-        }
+        l.x = s.x[pb.tagVar(j)];
+        l.y = s.x[pb.tagVar(j) + 1];
         res.run.map.push_back(l);
     }
+    // Marginal stds at the final state (H above was linearised before the
+    // last accepted step).
+    marginals(pb, s, res.run.map);
+    return res;
+}
+}  // namespace detail
+
+TGraphSmootherParams smootherParams(const TSlamConfig& cfg) {
+    TGraphSmootherParams p;
+    p.motion = cfg.motion;
+    p.options = cfg.smoother;
+    p.maxIterations = cfg.smoother.max_iterations;
+    return p;
+}
+
+TGraphSmootherResult smoothRun(const std::vector<TSlamInput>& inputs,
+                               const mrpt::poses::CPose2D& start,
+                               const TSlamRun& filtered,
+                               const TGraphSmootherParams& params) {
+    if (filtered.path.size() != inputs.size())
+        throw std::invalid_argument("smoothRun: the path needs one pose per input");
+    const auto t0 = std::chrono::steady_clock::now();
+    auto res = params.options.solver == "lm"
+                   ? detail::smoothRunLM(inputs, start, filtered, params)
+                   : detail::smoothRunCeres(inputs, start, filtered, params);
+    res.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return res;
 }
 

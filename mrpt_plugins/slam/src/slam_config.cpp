@@ -25,19 +25,21 @@ TSlamConfig loadSlamConfig(const mrpt::config::CConfigFileBase& ini,
     TSlamConfig c;
     std::vector<std::string> sections;
     ini.getAllSections(sections);
-    const std::set<std::string> ours = {"slam", "motion", "kidnap", "fastslam"};
+    const std::set<std::string> ours = {"slam", "motion", "kidnap", "fastslam",
+                                        "smoother"};
     const std::set<std::string> mapSections = tagMapSections();
     for (const auto& s : sections)
         if (!s.empty() && !ours.count(s) && !mapSections.count(s))
             throw rfir::ini::CIniError(rfir::ini::fileOf(ini) + "unknown section [" + s +
                                        "] (known: slam, motion, "
-                                       "kidnap, fastslam, " +
+                                       "kidnap, fastslam, smoother, " +
                                        joinSections(mapSections) + ")");
     loadSection(c.slam, ini, "slam");
     if (methodOverride) c.slam.method = methodName(parseMethod(*methodOverride));
     loadSection(c.motion, ini, "motion");
     loadSection(c.kidnap, ini, "kidnap");
     loadSection(c.fastslam, ini, "fastslam");
+    loadSection(c.smoother, ini, "smoother");
     c.tagmap = loadTagMapOptions(ini, c.method());
     return c;
 }
@@ -66,7 +68,7 @@ TSlamConfig loadSlamConfigFile(const std::string& path,
 }
 
 std::vector<std::string> slamConfigSections() {
-    std::vector<std::string> v = {"slam", "motion", "kidnap", "fastslam"};
+    std::vector<std::string> v = {"slam", "motion", "kidnap", "fastslam", "smoother"};
     for (const auto& s : tagMapSections()) v.push_back(s);
     return v;
 }
@@ -77,6 +79,7 @@ std::string dumpSlamConfig(const TSlamConfig& cfg) {
     cfg.motion.saveToConfigFile(mem, "motion");
     cfg.kidnap.saveToConfigFile(mem, "kidnap");
     cfg.fastslam.saveToConfigFile(mem, "fastslam");
+    cfg.smoother.saveToConfigFile(mem, "smoother");
     return mem.getContent() + "\n" + dumpTagMapOptions(cfg.tagmap, cfg.seed);
 }
 

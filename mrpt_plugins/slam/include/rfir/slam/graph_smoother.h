@@ -2,14 +2,16 @@
  * at time t uses only the data up to t, so the first pass over new ground
  * keeps its odometry drift, and independent per-tag filters keep it in the map
  * (docs/slam.md, "Known gaps"). Offline, the whole log is known: this smoother
- * refines the filter's path and map jointly, by Gauss-Newton on the factor
- * graph of odometry increments (MRPT's Gaussian odometry model, the [motion]
- * section) and RFID reads (the seeds' step likelihood approximated by a
- * Gaussian with the std of a uniform square: half-size / sqrt(3)). Started
- * from the filter's output, it moves the past poses and the tags with the
- * robot-tag correlations the per-tag filters drop. */
+ * refines the filter's path and map jointly on the factor graph of odometry
+ * increments (the [motion] noise model, robust loss, with the odometry's
+ * translation scale and heading drift per metre as variables) and RFID reads
+ * (flat inside the reader's square, robust loss), plus the negative
+ * information of polled readers that read nothing, solved with Ceres. The
+ * odometry factor across a kidnapping the filter reported is cut. The former
+ * Gauss-Newton with Gaussian reads stays as [smoother] solver = lm. */
 #pragma once
 
+#include <rfir/slam/graph_smoother_options.h>
 #include <rfir/slam/motion_model.h>
 #include <rfir/slam/slam_engine.h>
 
@@ -23,8 +25,13 @@ struct TGraphSmootherParams {
     TMotionOptions motion;         //!< odometry noise (the SLAM INI's [motion])
     double readStdFactor = 0.577;  //!< read std = factor x half-size (uniform: 1/sqrt 3)
     int maxIterations = 30;
-    double tolerance = 1e-9;  //!< stop when the largest update is below it (m, rad)
+    double tolerance = 1e-9;        //!< stop when the largest update is below it (m, rad)
+    TGraphSmootherOptions options;  //!< the INI's [smoother]
 };
+
+struct TSlamConfig;
+/** The smoother's parameters of a SLAM configuration ([motion], [smoother]). */
+TGraphSmootherParams smootherParams(const TSlamConfig& cfg);
 
 struct TGraphSmootherResult {
     /** The filter's run with the smoothed poses (same times) and the smoothed
@@ -32,7 +39,14 @@ struct TGraphSmootherResult {
     TSlamRun run;
     double initialCost = 0, finalCost = 0;  //!< sum of squared whitened residuals
     int iterations = 0;
-    size_t reads = 0;  //!< RFID read factors used
+    size_t reads = 0;      //!< RFID read factors used
+    size_t negatives = 0;  //!< negative-information factors (polls without the tag)
+    double seconds = 0;    //!< wall time of the solve
+    /** Estimated odometry systematic error: true translation = (1 + scale) x
+     * odometry's, true heading change = odometry's + drift x distance. */
+    double odometryScale = 0, headingDriftPerMetre = 0;
+    /** Times (s) of the odometry increments cut as kidnappings. */
+    std::vector<double> cutTimes;
 };
 
 /** Smooths a filter's run (one pose per input, and its map) over the inputs;

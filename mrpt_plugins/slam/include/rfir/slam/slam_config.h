@@ -3,6 +3,7 @@
 #pragma once
 
 #include <rfir/slam/CFastSLAMParticles.h>
+#include <rfir/slam/graph_smoother_options.h>
 #include <rfir/slam/kidnap.h>
 #include <rfir/slam/motion_model.h>
 #include <rfir/slam/slam_options.h>
@@ -19,10 +20,11 @@ namespace rfir::slam {
 struct TTagMapSettings;  // tagmap_engine.h
 
 struct TSlamConfig {
-    TSlamOptions slam;          //!< [slam]
-    TMotionOptions motion;      //!< [motion]
-    TKidnapOptions kidnap;      //!< [kidnap]
-    TFastSLAMOptions fastslam;  //!< [fastslam]
+    TSlamOptions slam;               //!< [slam]
+    TMotionOptions motion;           //!< [motion]
+    TKidnapOptions kidnap;           //!< [kidnap]
+    TFastSLAMOptions fastslam;       //!< [fastslam]
+    TGraphSmootherOptions smoother;  //!< [smoother] (--smooth)
     /** The tag map's options (PF-SLAM / PS-SLAM), see tagmap_engine.h. */
     std::shared_ptr<TTagMapSettings> tagmap;
     /** Seed of every random draw of the run (--seed), not an INI key. */

@@ -1,0 +1,130 @@
+/* rfir: the robust smoother's factors as Ceres auto-differentiated cost
+ * functors (graph_smoother_ceres.cpp). Poses are (x, y, phi) with phi
+ * unwrapped along the path; tags (x, y). The read model is read_model.h's
+ * e = R(phi)^T (tag - t) - reader centre, written here over Jets. */
+#pragma once
+
+#include <ceres/ceres.h>
+
+#include <cmath>
+
+namespace rfir::slam::detail {
+/** e of read_model.h (readModel) for any scalar type. */
+template <class T>
+void readOffset(const T* p, const T* m, double cx, double cy, T& ex, T& ey) {
+    using std::cos;
+    using std::sin;
+    const T c = cos(p[2]), s = sin(p[2]);
+    const T dx = m[0] - p[0], dy = m[1] - p[1];
+    ex = c * dx + s * dy - cx;
+    ey = -s * dx + c * dy - cy;
+}
+
+/** |e| smoothed over tau (sqrt(e^2 + tau^2)): differentiable at 0. */
+template <class T>
+T smoothAbs(const T& e, double tau) {
+    using std::sqrt;
+    return sqrt(e * e + T(tau * tau));
+}
+
+/** The step model's shape along one axis: zero inside the half-size h,
+ * growing linearly outside it, the corner rounded over tau (a softplus). */
+template <class T>
+T hinge(const T& e, double h, double tau) {
+    using std::exp;
+    using std::log;
+    const T z = (smoothAbs(e, tau) - h) / tau;
+    if (z > T(30)) return z * tau;  // log(1 + e^z) = z to double precision
+    return T(tau) * log(T(1) + exp(z));
+}
+
+/** Probability-like indicator of |e| < h (a logistic over tau). */
+template <class T>
+T inside(const T& e, double h, double tau) {
+    using std::exp;
+    const T z = (smoothAbs(e, tau) - h) / tau;
+    if (z > T(40)) return T(0) * z + T(std::exp(-40.0));
+    return T(1) / (T(1) + exp(z));
+}
+
+/** Odometry increment u between poses p and c; bias b = (translation scale,
+ * heading drift per metre): the robot moved (1 + b0) u_xy and turned
+ * u_phi + b1 d (d = |u_xy|). Whitened by the [motion] model's stds. */
+struct COdometryCost {
+    double ux, uy, uphi, d, wxy, wphi;
+    template <class T>
+    bool operator()(const T* p, const T* c, const T* b, T* r) const {
+        using std::cos;
+        using std::sin;
+        const T cs = cos(p[2]), sn = sin(p[2]);
+        const T dx = c[0] - p[0], dy = c[1] - p[1];
+        const T s = T(1) + b[0];
+        r[0] = wxy * (cs * dx + sn * dy - s * ux);
+        r[1] = wxy * (-sn * dx + cs * dy - s * uy);
+        r[2] = wphi * (c[2] - p[2] - uphi - b[1] * d);
+        return true;
+    }
+};
+
+/** A read: the tag inside the reader's square (zero residual), else the
+ * distance from the square's edge over the tail std. */
+struct CReadCost {
+    double cx, cy, hx, hy, tauX, tauY, sx, sy;
+    template <class T>
+    bool operator()(const T* p, const T* m, T* r) const {
+        T ex, ey;
+        readOffset(p, m, cx, cy, ex, ey);
+        // The rounded corner lies outside the square: a tag on its edge costs
+        // nothing (the band between this and CMissCost's favours neither).
+        r[0] = hinge(ex, hx + tauX, tauX) / sx;
+        r[1] = hinge(ey, hy + tauY, tauY) / sy;
+        return true;
+    }
+};
+
+/** A read as a Gaussian about the reader's centre (the former smoother's
+ * model, std = factor x half-size): the first, convex-like solve, from which
+ * the flat-inside model starts. */
+struct CGaussianReadCost {
+    double cx, cy, wx, wy;
+    template <class T>
+    bool operator()(const T* p, const T* m, T* r) const {
+        T ex, ey;
+        readOffset(p, m, cx, cy, ex, ey);
+        r[0] = ex * wx;
+        r[1] = ey * wy;
+        return true;
+    }
+};
+
+/** A polled reader that did not read the tag: -log(1 - pd P(inside)), as a
+ * residual r with r^2 / 2 that cost. */
+struct CMissCost {
+    double cx, cy, hx, hy, tauX, tauY, pd;
+    template <class T>
+    bool operator()(const T* p, const T* m, T* r) const {
+        using std::log;
+        using std::sqrt;
+        T ex, ey;
+        readOffset(p, m, cx, cy, ex, ey);
+        // The logistic's slope lies inside the square: a tag just outside
+        // it, as every unread tag near a reader is, costs nothing (a soft
+        // edge on the square itself pushed the whole map outwards).
+        const T pin = inside(ex, hx - 2 * tauX, tauX) * inside(ey, hy - 2 * tauY, tauY);
+        // The tiny constant keeps sqrt differentiable where pin is 0.
+        r[0] = sqrt(T(-2) * log(T(1) - pd * pin) + T(1e-12));
+        return true;
+    }
+};
+
+/** Gaussian prior of the odometry bias about zero. */
+struct CBiasPrior {
+    double wScale, wDrift;
+    template <class T>
+    bool operator()(const T* b, T* r) const {
+        r[0] = wScale * b[0];
+        r[1] = wDrift * b[1];
+        return true;
+    }
+};
+}  // namespace rfir::slam::detail

@@ -1,0 +1,147 @@
+// The offline smoother on the runs a real robot records (issue 12, item 5):
+// after a kidnapping, on 300 mm readers with empty polls written, and on the
+// fault INIs; each against the filter it starts from.
+#include "test_slam_sim.h"
+
+#include <rfir/slam/graph_smoother.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+using namespace slam_test;
+
+namespace {
+struct TScore {
+    double filter = 0, smoothed = 0;            //!< whole run, robot mean, m
+    double filterAfter = 0, smoothedAfter = 0;  //!< after the put-down (kidnap INIs)
+    double filterTags = 0, smoothedTags = 0;
+    rfir::slam::TGraphSmootherResult res;
+};
+
+rfir::sim::TSimConfig simIni(const std::string& ini, double maxDuration = 0) {
+    auto c =
+        rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini);
+    if (maxDuration > 0) c.maxDuration = maxDuration;
+    return c;
+}
+
+double meanAfter(const rfir::eval::TRobotErrors& e, double t0) {
+    std::vector<double> v;
+    for (const auto& pe : e.perPose)
+        if (pe.t > t0) v.push_back(pe.dist);
+    return mean(v);
+}
+
+/** SMOOTH_OPTS="key=value,...": [smoother] edits for the measurements. */
+std::vector<std::pair<std::string, std::string>> smootherEdits() {
+    std::vector<std::pair<std::string, std::string>> v;
+    const char* e = std::getenv("SMOOTH_OPTS");
+    std::stringstream in(e ? e : "");
+    for (std::string kv; std::getline(in, kv, ',');) {
+        const auto eq = kv.find('=');
+        if (eq != std::string::npos)
+            v.emplace_back("smoother." + kv.substr(0, eq), kv.substr(eq + 1));
+    }
+    return v;
+}
+
+TScore filterAndSmooth(const rfir::sim::TSimConfig& c, const std::string& name,
+                       uint64_t seed, const char* method) {
+    const auto sim = rfir::sim::simulate(c, seed);
+    const auto cfg = stockConfig(method, smootherEdits());
+    const auto f = runMethod(sim, cfg, seed);
+    TScore s;
+    s.res = rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose, f.run,
+                                  rfir::slam::smootherParams(cfg));
+    const auto se = rfir::eval::computeRobotErrors(rfir::common::stampedPath(s.res.run),
+                                                   sim.groundTruth);
+    const double t0 = c.kidnap.enabled ? c.kidnap.time + c.kidnap.carryTime : 0;
+    s.filter = f.robot, s.smoothed = se.stats.mean_dist;
+    s.filterAfter = meanAfter(f.robotErrors, t0), s.smoothedAfter = meanAfter(se, t0);
+    s.filterTags = f.tags;
+    s.smoothedTags =
+        rfir::eval::computeMapErrors(rfir::common::landmarkEntries(s.res.run.map),
+                                     sim.gtMap, rfir::common::TMapEntry::Kind::Tag)
+            .stats.mean_dist;
+    std::printf(
+        "%s seed %d %s: filter %.1f (after %.1f) / %.1f, smoothed %.1f (after %.1f) / "
+        "%.1f mm; %zu resets, %d it, %.2f s, odometry scale %+.4f, drift %+.5f rad/m\n",
+        name.c_str(), int(seed), method, 1e3 * s.filter, 1e3 * s.filterAfter,
+        1e3 * s.filterTags, 1e3 * s.smoothed, 1e3 * s.smoothedAfter, 1e3 * s.smoothedTags,
+        f.run.resets, s.res.iterations, s.res.seconds, s.res.odometryScale,
+        s.res.headingDriftPerMetre);
+    return s;
+}
+}  // namespace
+
+// Measurements of docs/slam.md ("Offline smoothing"): every setup, 3 seeds.
+TEST(GraphSmootherRobust, DISABLED_Measure) {
+    const char* only = std::getenv("SMOOTH_INI");
+    for (const char* ini :
+         {"sim_kidnap.ini", "sim_kidnap_300mm.ini", "sim_rfid_300mm_rotation.ini",
+          "sim_rfid_60mm_16tags_loop.ini", "sim_faults_slips.ini", "sim_faults_ghost.ini",
+          "sim_faults_bias.ini", "sim_faults_combined.ini"}) {
+        if (only && std::string(only) != ini) continue;
+        const auto c = simIni(ini);
+        for (uint64_t seed = 1; seed <= 3; seed++)
+            for (const char* m : {"pf", "ps"}) filterAndSmooth(c, ini, seed, m);
+    }
+}
+
+// Issue 12's bar: after a kidnapping the smoothed run is at least as good as
+// the filter it starts from, over the whole run and after the put-down (PF-
+// SLAM, the stock 60 mm and 300 mm kidnap INIs, seeds 1-3). The former
+// Gauss-Newton smoother (no robust loss) averaged the carried robot's frozen
+// odometry in: 465-473 mm against the filter's 84-196 mm at 60 mm, 194-221
+// against 121-216 mm at 300 mm.
+TEST(GraphSmootherRobust, KidnapNoWorseThanTheFilter) {
+    for (const char* ini : {"sim_kidnap.ini", "sim_kidnap_300mm.ini"})
+        for (uint64_t seed = 1; seed <= 3; seed++) {
+            const auto s = filterAndSmooth(simIni(ini), ini, seed, "pf");
+            EXPECT_GE(s.res.cutTimes.size(), 1u) << ini << " seed " << seed;
+            EXPECT_LE(s.smoothed, s.filter) << ini << " seed " << seed;
+            EXPECT_LE(s.smoothedAfter, s.filterAfter) << ini << " seed " << seed;
+        }
+}
+
+// Issue 12's bar: on the 300 mm loop with rotation and empty polls written
+// (the simulator's default), the smoothed robot error is at most 0.8 x the
+// filter's (PF-SLAM, seeds 1-3).
+TEST(GraphSmootherRobust, EmptyPolls300mmLoop) {
+    const char* ini = "sim_rfid_300mm_rotation.ini";
+    auto c = simIni(ini);
+    ASSERT_TRUE(c.rfid.writeEmptyPolls);
+    for (uint64_t seed = 1; seed <= 3; seed++) {
+        const auto s = filterAndSmooth(c, ini, seed, "pf");
+        EXPECT_GT(s.res.negatives, 0u);
+        EXPECT_LE(s.smoothed, 0.8 * s.filter) << "seed " << seed;
+    }
+}
+
+// The smoother started from the ground truth (sim_rfid_300mm_rotation, seed
+// 1): the cost at the truth and where the optimum lies, with the odometry
+// scale held and estimated (how the scale's default was chosen).
+TEST(GraphSmootherRobust, DISABLED_FromTruth) {
+    const auto sim = rfir::sim::simulate(simIni("sim_rfid_300mm_rotation.ini"), 1);
+    rfir::slam::TSlamRun gt;
+    for (const auto& g : sim.groundTruth) gt.path.emplace_back(g.t, g.pose);
+    for (const auto& e : sim.gtMap) {
+        rfir::slam::TLandmarkOut l;
+        l.id = e.id, l.x = e.x, l.y = e.y;
+        gt.map.push_back(l);
+    }
+    for (double sp : {0.0, 0.01}) {
+        auto p = rfir::slam::smootherParams(stockConfig("pf", smootherEdits()));
+        p.options.scale_prior_std = sp;
+        const auto r =
+            rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose, gt, p);
+        const auto se = rfir::eval::computeRobotErrors(rfir::common::stampedPath(r.run),
+                                                       sim.groundTruth);
+        std::printf(
+            "prior %.2f: cost %.1f -> %.1f, %zu reads %zu neg, err %.1f mm scale %.4f\n",
+            sp, r.initialCost, r.finalCost, r.reads, r.negatives,
+            1e3 * se.stats.mean_dist, r.odometryScale);
+    }
+}

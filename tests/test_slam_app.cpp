@@ -176,6 +176,12 @@ TEST(SlamApp, SmoothWritesItsOutputs) {
         EXPECT_TRUE(mrpt::system::fileExists(out + "/" + f)) << f;
     EXPECT_NE(r.out.find("pf smoothed"), std::string::npos) << r.out;
     EXPECT_NE(slurp(out + "/map_smoothed.txt").find("tag "), std::string::npos);
+    // The smoother's odometry bias and kidnap cuts: console and stats.json.
+    EXPECT_NE(r.out.find("odometry systematic error"), std::string::npos) << r.out;
+    const std::string st = slurp(out + "/stats.json");
+    for (const char* k : {"\"smoother\": {\"solver\": \"ceres\"",
+                          "\"heading_drift_rad_per_m\": ", "\"odometry_cut_times_s\": ["})
+        EXPECT_NE(st.find(k), std::string::npos) << k << "\n" << st;
 
     const std::string rb = d + "/rb";
     mrpt::system::createDirectory(rb);
@@ -206,6 +212,7 @@ TEST(SlamApp, OutputsBelongToOneRun) {
         EXPECT_FALSE(mrpt::system::fileExists(out + "/" + f)) << f;
     const std::string stats = slurp(out + "/stats.json");
     EXPECT_NE(stats.find("\"seed\": 2"), std::string::npos) << stats;
+    EXPECT_EQ(stats.find("\"smoother\""), std::string::npos) << stats;  // not smoothed
     EXPECT_NE(stats.find("\"ini_md5\": \""), std::string::npos) << stats;
     EXPECT_NE(stats.find("--seed 2"), std::string::npos) << stats;
     EXPECT_NE(stats.find("\"files\": [\"error_time.png\", \"errors.json\", \"map.txt\", "

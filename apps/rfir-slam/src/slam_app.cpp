@@ -308,10 +308,12 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
     o << std::setprecision(9);
     for (size_t k = 0; k < res.cutTimes.size(); k++) {
         cuts << (k ? ", " : "") << res.cutTimes[k];
-        logStream(a) << "rfir-slam: smoother cut the odometry at t = " << res.cutTimes[k]
-                     << " s (kidnapping)\n";
+        logStream(a) << "rfir-slam: smoother cut the odometry at t = " << std::fixed
+                     << std::setprecision(2) << res.cutTimes[k] << " s (kidnapping)\n"
+                     << std::defaultfloat;
     }
-    logStream(a) << "rfir-slam: odometry systematic error: translation scale "
+    logStream(a) << std::setprecision(6)
+                 << "rfir-slam: odometry systematic error: translation scale "
                  << res.odometryScale << ", heading drift " << res.headingDriftPerMetre
                  << " rad/m\n";
     o << ", \"smoother\": {\"solver\": \"" << p.options.solver

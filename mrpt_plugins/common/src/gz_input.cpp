@@ -38,12 +38,25 @@ void CGzInputStream::open(const std::string& path) {
         throw std::runtime_error(path + ": no such file");
     gz_ = gzopen(path.c_str(), "rb");
     if (!gz_) throw std::runtime_error(path + ": cannot open for reading");
-    // One pass to learn the uncompressed size: counts read from the file are
-    // checked against it before anything is allocated. A damaged tail stops
-    // the count; the read reports it at the entry where it is met.
+    // The uncompressed size: counts read from the file are checked against it
+    // before anything is allocated. A gzip stream takes one pass (its trailer
+    // could lie); a damaged tail stops the count, and the read reports it at
+    // the entry where it is met.
     auto f = static_cast<gzFile>(gz_);
-    std::string buf(kChunk, '\0');
-    for (int r; (r = gzread(f, buf.data(), kChunk)) > 0;) total_ += uint64_t(r);
+    char probe = 0;
+    const int first = gzread(f, &probe, 1);
+    if (first == 1 && gzdirect(f)) {
+        // Not compressed: the size is the file's, no second pass needed.
+        total_ = std::filesystem::file_size(path, ec);
+        if (ec) {
+            close();
+            throw std::runtime_error(path + ": cannot read its size");
+        }
+    } else if (first == 1) {
+        std::string buf(kChunk, '\0');
+        total_ = 1;
+        for (int r; (r = gzread(f, buf.data(), kChunk)) > 0;) total_ += uint64_t(r);
+    }
     gzclearerr(f);
     if (gzrewind(f) != 0) {
         close();

@@ -12,16 +12,9 @@ mkdir -p "$WORK"
 
 # Layer of each library, lowest first. Equal numbers may not link each other.
 declare -A RANK=(
-  [rfir_models]=1 [rfir_observations]=2 [rfir_maps]=3 [rfir_slam]=4 [rfir_ir]=4
+  [rfir_models]=1 [rfir_observations]=2 [rfir_io]=3 [rfir_maps]=3 [rfir_slam]=4 [rfir_ir]=4
   [rfir_appcommon]=5 [rfir_sim]=6 [rfir_eval]=6 [rfir_localize_core]=7
   [rfir_mrpt_plugin]=8
-)
-# Known exceptions, each with its reason; an edge here is reported, not failed.
-declare -A KNOWN=(
-  # The emitter map reads its emitter file (textlog.md's map format) when MRPT
-  # creates it from an INI section; the map-file reader and the atomic writer
-  # still live in rfir_appcommon instead of a layer below rfir_ir.
-  ["rfir_ir -> rfir_appcommon"]=1
 )
 
 cmake -S "$ROOT" -B "$WORK/build" -DRFIR_BUILD_TESTS=OFF \
@@ -37,12 +30,8 @@ while read -r from to; do
     echo "check_layers: $from links $to, which has no layer in scripts/check_layers.sh" >&2
     fail=1
   elif ((RANK[$to] >= RANK[$from])); then
-    if [[ -n "${KNOWN["$from -> $to"]:-}" ]]; then
-      echo "check_layers: known exception: $from -> $to"
-    else
-      echo "check_layers: $from (layer ${RANK[$from]}) links $to (layer ${RANK[$to]})" >&2
-      fail=1
-    fi
+    echo "check_layers: $from (layer ${RANK[$from]}) links $to (layer ${RANK[$to]})" >&2
+    fail=1
   fi
 done < <(sed -n 's|.*// \([^ ]*\) -> \([^ ]*\)$|\1 \2|p' "$WORK/rfir.dot")
 

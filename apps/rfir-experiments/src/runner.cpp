@@ -2,11 +2,11 @@
 #include "runner.h"
 
 #include <rfir/common/ini_override.h>
-#include <rfir/common/slam_run.h>
 #include <rfir/common/text_input.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/slam_inputs.h>
+#include <rfir/slam/slam_outputs.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -129,8 +129,8 @@ TRunResult runMethod(const TSetup& setup, const TDataSet& data, const TMethodSpe
     r.totalSeconds = run.totalTime;
     r.steps = run.path.size();
     r.resets = run.resets;
-    rfir::common::TPath2D est = rfir::common::stampedPath(run);
-    rfir::common::TMapFile map = rfir::common::landmarkEntries(run.map);
+    rfir::common::TPath2D est = rfir::slam::stampedPath(run);
+    rfir::common::TMapFile map = rfir::slam::landmarkEntries(run.map);
     r.eval.label = m.label;
     r.eval.robot = rfir::eval::computeRobotErrors(est, data.sim.groundTruth);
     r.eval.map = rfir::eval::computeMapErrors(map, data.sim.gtMap, mapKind(data.sim));

@@ -9,7 +9,6 @@
 #include <rfir/common/output_set.h>
 #include <rfir/common/progress.h>
 #include <rfir/common/rawlog_io.h>
-#include <rfir/common/slam_run.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/eval/compare.h>
 #include <rfir/eval/metrics.h>
@@ -18,6 +17,7 @@
 #include <rfir/eval/scene3d.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/slam_inputs.h>
+#include <rfir/slam/slam_outputs.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -268,8 +268,8 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(
     const TAppArgs& a, rfir::common::COutputFolder& out, const TTruth& truth,
     const rfir::slam::TSlamRun& run, const std::string& sfx, const std::string& label,
     const std::string& legend) {
-    const TPath2D path = rfir::common::stampedPath(run);
-    const TMapFile map = rfir::common::landmarkEntries(run.map);
+    const TPath2D path = rfir::slam::stampedPath(run);
+    const TMapFile map = rfir::slam::landmarkEntries(run.map);
     rfir::common::saveTUM(out.file("path" + sfx + ".tum"), path);
     rfir::common::saveMapFile(out.file("map" + sfx + ".txt"), map,
                               "rfir-slam " + label + ": " + legend);

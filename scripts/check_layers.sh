@@ -2,7 +2,8 @@
 # The layers point one way (docs/architecture.md): read the library graph from
 # CMake (--graphviz, a configure of its own, nothing built) and fail when a
 # library links one of its own layer or above, or when a folder of apps/
-# declares a library (a program folder holds its main and command line).
+# declares a library or holds more than one source file (a program folder
+# holds its main and command line).
 #   scripts/check_layers.sh [work dir]      (default: a temporary folder)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -14,7 +15,7 @@ mkdir -p "$WORK"
 declare -A RANK=(
   [rfir_models]=1 [rfir_observations]=2 [rfir_io]=3 [rfir_maps]=3 [rfir_slam]=4 [rfir_ir]=4
   [rfir_appcommon]=5 [rfir_sim]=6 [rfir_eval]=6 [rfir_localize_core]=7
-  [rfir_mrpt_plugin]=8
+  [rfir_slamapp]=7 [rfir_experiments]=7 [rfir_bench]=7 [rfir_irexp]=8 [rfir_mrpt_plugin]=8
 )
 
 cmake -S "$ROOT" -B "$WORK/build" -DRFIR_BUILD_TESTS=OFF \
@@ -43,6 +44,11 @@ if grep -rlE '^\s*(rfir_)?add_library\(' "$ROOT"/apps --include=CMakeLists.txt; 
   echo "check_layers: the program folders above declare a library" >&2
   fail=1
 fi
+# A program folder holds one source file, its main with its command line.
+for dir in "$ROOT"/apps/*/; do
+  n=$(find "$dir" -name '*.cpp' -o -name '*.h' | wc -l)
+  ((n <= 1)) || { echo "check_layers: $dir holds $n source files, not only its main" >&2; fail=1; }
+done
 if grep -rnE 'include_directories\([^)]*apps/' "$ROOT"/mrpt_plugins "$ROOT"/observations \
     --include=CMakeLists.txt; then
   echo "check_layers: a library includes a program folder" >&2

@@ -11,13 +11,14 @@ find_path(RFIR_TCLAP_DIR mrpt/3rdparty/tclap/CmdLine.h
 add_library(rfir_tclap INTERFACE)
 target_include_directories(rfir_tclap INTERFACE ${RFIR_TCLAP_DIR})
 
-# rfir_add_library(<target> SHARED|STATIC EXPORT <name>
+# rfir_add_library(<target> SHARED|STATIC EXPORT <name> [INTERNAL]
 #                  SOURCES <files> [PUBLIC <deps>] [PRIVATE <deps>])
 # Public headers in <folder>/include (installed under include/), exported as
 # rfir::<name>. A library lists the layers below it only (docs/architecture.md;
-# scripts/check_layers.sh checks the graph).
+# scripts/check_layers.sh checks the graph). INTERNAL: the work of one program
+# (its run, its experiments), linked by it and the tests, not installed.
 function(rfir_add_library target type)
-  cmake_parse_arguments(L "" "EXPORT" "SOURCES;PUBLIC;PRIVATE" ${ARGN})
+  cmake_parse_arguments(L "INTERNAL" "EXPORT" "SOURCES;PUBLIC;PRIVATE" ${ARGN})
   if(NOT L_EXPORT OR NOT L_SOURCES)
     message(FATAL_ERROR "rfir_add_library(${target}): EXPORT and SOURCES are required")
   endif()
@@ -27,7 +28,11 @@ function(rfir_add_library target type)
       $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>)
   endif()
   target_link_libraries(${target} PUBLIC ${L_PUBLIC} PRIVATE ${L_PRIVATE})
-  rfir_install_library(${target} ${L_EXPORT})
+  if(L_INTERNAL)
+    add_library(rfir::${L_EXPORT} ALIAS ${target})
+  else()
+    rfir_install_library(${target} ${L_EXPORT})
+  endif()
 endfunction()
 
 # rfir_add_program(<name> SOURCES <files> DEPS <libraries>)

@@ -2,7 +2,8 @@
 # The layers point one way (docs/architecture.md): read the library graph from
 # CMake (--graphviz, a configure of its own, nothing built) and fail when a
 # library links one of its own layer or above, or when a folder of apps/
-# declares a library (a program folder holds its main and command line).
+# declares a library or holds more than one source file (a program folder
+# holds its main and command line).
 #   scripts/check_layers.sh [work dir]      (default: a temporary folder)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -12,16 +13,9 @@ mkdir -p "$WORK"
 
 # Layer of each library, lowest first. Equal numbers may not link each other.
 declare -A RANK=(
-  [rfir_models]=1 [rfir_observations]=2 [rfir_maps]=3 [rfir_slam]=4 [rfir_ir]=4
+  [rfir_models]=1 [rfir_observations]=2 [rfir_io]=3 [rfir_maps]=3 [rfir_slam]=4 [rfir_ir]=4
   [rfir_appcommon]=5 [rfir_sim]=6 [rfir_eval]=6 [rfir_localize_core]=7
-  [rfir_mrpt_plugin]=8
-)
-# Known exceptions, each with its reason; an edge here is reported, not failed.
-declare -A KNOWN=(
-  # The emitter map reads its emitter file (textlog.md's map format) when MRPT
-  # creates it from an INI section; the map-file reader and the atomic writer
-  # still live in rfir_appcommon instead of a layer below rfir_ir.
-  ["rfir_ir -> rfir_appcommon"]=1
+  [rfir_slamapp]=7 [rfir_experiments]=7 [rfir_bench]=7 [rfir_irexp]=8 [rfir_mrpt_plugin]=8
 )
 
 cmake -S "$ROOT" -B "$WORK/build" -DRFIR_BUILD_TESTS=OFF \
@@ -37,12 +31,8 @@ while read -r from to; do
     echo "check_layers: $from links $to, which has no layer in scripts/check_layers.sh" >&2
     fail=1
   elif ((RANK[$to] >= RANK[$from])); then
-    if [[ -n "${KNOWN["$from -> $to"]:-}" ]]; then
-      echo "check_layers: known exception: $from -> $to"
-    else
-      echo "check_layers: $from (layer ${RANK[$from]}) links $to (layer ${RANK[$to]})" >&2
-      fail=1
-    fi
+    echo "check_layers: $from (layer ${RANK[$from]}) links $to (layer ${RANK[$to]})" >&2
+    fail=1
   fi
 done < <(sed -n 's|.*// \([^ ]*\) -> \([^ ]*\)$|\1 \2|p' "$WORK/rfir.dot")
 
@@ -54,6 +44,11 @@ if grep -rlE '^\s*(rfir_)?add_library\(' "$ROOT"/apps --include=CMakeLists.txt; 
   echo "check_layers: the program folders above declare a library" >&2
   fail=1
 fi
+# A program folder holds one source file, its main with its command line.
+for dir in "$ROOT"/apps/*/; do
+  n=$(find "$dir" -name '*.cpp' -o -name '*.h' | wc -l)
+  ((n <= 1)) || { echo "check_layers: $dir holds $n source files, not only its main" >&2; fail=1; }
+done
 if grep -rnE 'include_directories\([^)]*apps/' "$ROOT"/mrpt_plugins "$ROOT"/observations \
     --include=CMakeLists.txt; then
   echo "check_layers: a library includes a program folder" >&2

@@ -26,10 +26,10 @@ TSmoothed smoothAndScore(const rfir::sim::TSimOutput& sim, const TResult& filter
     TSmoothed s;
     s.res = rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose,
                                   filtered.run, p);
-    s.robot = rfir::eval::computeRobotErrors(rfir::common::stampedPath(s.res.run),
+    s.robot = rfir::eval::computeRobotErrors(rfir::slam::stampedPath(s.res.run),
                                              sim.groundTruth)
                   .stats.mean_dist;
-    s.tags = rfir::eval::computeMapErrors(rfir::common::landmarkEntries(s.res.run.map),
+    s.tags = rfir::eval::computeMapErrors(rfir::slam::landmarkEntries(s.res.run.map),
                                           sim.gtMap, rfir::common::TMapEntry::Kind::Tag)
                  .stats.mean_dist;
     return s;

@@ -55,14 +55,14 @@ TScore filterAndSmooth(const rfir::sim::TSimConfig& c, const std::string& name,
     TScore s;
     s.res = rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose, f.run,
                                   rfir::slam::smootherParams(cfg));
-    const auto se = rfir::eval::computeRobotErrors(rfir::common::stampedPath(s.res.run),
+    const auto se = rfir::eval::computeRobotErrors(rfir::slam::stampedPath(s.res.run),
                                                    sim.groundTruth);
     const double t0 = c.kidnap.enabled ? c.kidnap.time + c.kidnap.carryTime : 0;
     s.filter = f.robot, s.smoothed = se.stats.mean_dist;
     s.filterAfter = meanAfter(f.robotErrors, t0), s.smoothedAfter = meanAfter(se, t0);
     s.filterTags = f.tags;
     s.smoothedTags =
-        rfir::eval::computeMapErrors(rfir::common::landmarkEntries(s.res.run.map),
+        rfir::eval::computeMapErrors(rfir::slam::landmarkEntries(s.res.run.map),
                                      sim.gtMap, rfir::common::TMapEntry::Kind::Tag)
             .stats.mean_dist;
     std::printf(
@@ -137,7 +137,7 @@ TEST(GraphSmootherRobust, DISABLED_FromTruth) {
         p.options.scale_prior_std = sp;
         const auto r =
             rfir::slam::smoothRun(toInputs(sim), sim.groundTruth.front().pose, gt, p);
-        const auto se = rfir::eval::computeRobotErrors(rfir::common::stampedPath(r.run),
+        const auto se = rfir::eval::computeRobotErrors(rfir::slam::stampedPath(r.run),
                                                        sim.groundTruth);
         std::printf(
             "prior %.2f: cost %.1f -> %.1f, %zu reads %zu neg, err %.1f mm scale %.4f\n",

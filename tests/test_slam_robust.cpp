@@ -361,7 +361,7 @@ TEST(InterpolatedPolls, SparseOdometryOnTheLoop) {
                 auto engine = rfir::slam::makeEngine(cfg, sim.header);
                 const auto r =
                     rfir::slam::runEngine(*engine, sim.groundTruth.front().pose, in);
-                return rfir::eval::computeRobotErrors(rfir::common::stampedPath(r),
+                return rfir::eval::computeRobotErrors(rfir::slam::stampedPath(r),
                                                       sim.groundTruth)
                     .stats.mean_dist;
             };

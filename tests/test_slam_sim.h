@@ -2,11 +2,11 @@
 // methods run with their stock INIs, errors from rfir_eval.
 #pragma once
 
-#include <rfir/common/slam_run.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/slam_inputs.h>
+#include <rfir/slam/slam_outputs.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -56,9 +56,9 @@ inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConf
     TResult r;
     r.run = rfir::slam::runEngine(*engine, sim.groundTruth.front().pose, toInputs(sim));
     r.robotErrors =
-        rfir::eval::computeRobotErrors(rfir::common::stampedPath(r.run), sim.groundTruth);
+        rfir::eval::computeRobotErrors(rfir::slam::stampedPath(r.run), sim.groundTruth);
     r.robot = r.robotErrors.stats.mean_dist;
-    const auto m = rfir::common::landmarkEntries(r.run.map);
+    const auto m = rfir::slam::landmarkEntries(r.run.map);
     const auto kind = sim.header.rbSensor && !sim.header.readers.size()
                           ? rfir::common::TMapEntry::Kind::Landmark
                           : rfir::common::TMapEntry::Kind::Tag;

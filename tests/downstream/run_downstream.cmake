@@ -32,7 +32,7 @@ foreach(f include/rfir/maps/CRFIDTagParticleMap.h include/rfir/obs/CObservationR
     share/rfir/config_ini/slam_ps.ini share/rfir/config_ini/mrpt_rbpf_slam_rfid.ini)
   expect_file(${prefix}/${f})
 endforeach()
-foreach(lib observations models maps slam ir)
+foreach(lib observations models io maps slam ir)
   expect_file(${prefix}/lib/librfir_${lib}.so.${PROJECT_VERSION})
   expect_file(${prefix}/lib/librfir_${lib}.so.${soversion})
 endforeach()

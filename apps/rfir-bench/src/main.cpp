@@ -1,7 +1,7 @@
 /* rfir-bench: time per SLAM update of PS-SLAM, PF-SLAM and FastSLAM against
  * the robot particles M and the mapped tags N, their memory, a floor loop, and
  * whole offline runs against real time. See docs/benchmark.md. */
-#include "bench.h"
+#include <rfir/bench/bench.h>
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>

@@ -2,7 +2,7 @@
  * simulates its data sets (rfir_sim), runs PS-SLAM, PF-SLAM, FastSLAM and dead
  * reckoning on the same data (rfir_slam), scores them (rfir_eval) and
  * aggregates over seeds into results.json, results.md and img/exp_*.png. */
-#include "report.h"
+#include <rfir/experiments/report.h>
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>

@@ -2,7 +2,7 @@
  * (section 5.4, tables 5.2 and 5.3) in simulation, plus our own checks;
  * writes OUT/results_ir.md and OUT/img/ir_*.png. Every run goes through the
  * same code as rfir-localize (rawlogs written by rfir_sim). */
-#include "tables.h"
+#include <rfir/irexp/tables.h>
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>

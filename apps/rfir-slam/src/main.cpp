@@ -1,5 +1,5 @@
 /* rfir-slam: offline SLAM (PF-SLAM, PS-SLAM, FastSLAM 1.0) on a rawlog. */
-#include "slam_app.h"
+#include <rfir/slamapp/slam_app.h>
 
 #include <rfir/common/cli.h>
 

@@ -1,0 +1,402 @@
+#include <rfir/slamapp/slam_app.h>
+
+#include <rfir/common/install_paths.h>
+#include <rfir/slam/graph_smoother.h>
+
+#include <rfir/common/atomic_file.h>
+#include <rfir/common/ini_override.h>
+#include <rfir/common/map_io.h>
+#include <rfir/common/output_set.h>
+#include <rfir/common/progress.h>
+#include <rfir/common/rawlog_io.h>
+#include <rfir/common/trajectory_io.h>
+#include <rfir/eval/compare.h>
+#include <rfir/eval/metrics.h>
+#include <rfir/eval/plot.h>
+#include <rfir/eval/report.h>
+#include <rfir/eval/scene3d.h>
+#include <rfir/slam/slam_engine.h>
+#include <rfir/slam/slam_inputs.h>
+#include <rfir/slam/slam_outputs.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/system/filesystem.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace rfir::slamapp {
+using rfir::common::TMapEntry;
+using rfir::common::TMapFile;
+using rfir::common::TPath2D;
+
+namespace {
+/** stderr, or a sink under --quiet (warnings still go to stderr). */
+std::ostream& logStream(const TAppArgs& a) {
+    static std::ostream sink(nullptr);
+    return a.quiet ? sink : std::cerr;
+}
+
+/** The INI with the --set edits written over it. */
+rfir::slam::TSlamConfig loadConfig(const std::string& ini, const TAppArgs& a) {
+    if (a.sets.empty()) return rfir::slam::loadSlamConfigFile(ini, a.method);
+    std::ifstream f(ini);
+    if (!mrpt::system::fileExists(ini) || !f)
+        throw std::invalid_argument("cannot read INI file '" + ini + "'");
+    std::stringstream text;
+    text << f.rdbuf();
+    mrpt::config::CConfigFileMemory mem(text.str());
+    rfir::common::applyIniOverrides(mem, a.sets);
+    try {
+        return rfir::slam::loadSlamConfig(mem, a.method);
+    } catch (const std::exception& e) {
+        throw std::invalid_argument(ini + " (with --set): " + e.what());
+    }
+}
+
+std::string withoutRawlogExt(const std::string& p) {
+    const std::string ext = ".rawlog";
+    if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
+        return p.substr(0, p.size() - ext.size());
+    return p;
+}
+
+struct TLoaded {
+    rfir::obs::CObservationLogHeader header;
+    bool hasHeader = true;
+    std::optional<mrpt::poses::CPose2D> firstOdometry;  //!< first absolute pose
+    std::vector<rfir::slam::TSlamInput> inputs;
+    rfir::eval::TRawlogInfo info;  //!< odometry and sensor geometry, for the scoring
+};
+
+/** Reads the rawlog once: the filters' inputs and what the scoring needs;
+ * with [motion] interpolate_polls, every instant at the odometry interpolated
+ * to its time (rfir::slam::interpolatedInputs). */
+TLoaded readInputs(const std::string& path, const rfir::slam::TMotionOptions& motion) {
+    if (!mrpt::system::fileExists(path))
+        throw std::runtime_error("cannot read rawlog '" + path + "'");
+    rfir::common::CRawlogReader rd(path);
+    TLoaded l;
+    l.header = rd.header();
+    l.hasHeader = rd.hasHeader();
+    rfir::eval::CRawlogInfoBuilder info(l.header);
+    rfir::common::TRawlogStep st;
+    std::vector<rfir::slam::TRawInstant> raw;
+    std::optional<mrpt::poses::CPose2D> odo;  // the increments composed
+    std::optional<double> lastOdoT;
+    while (rd.next(st)) {
+        info.add(st);
+        if (!l.firstOdometry) l.firstOdometry = st.odometry;
+        rfir::slam::TSlamInput in;
+        in.t = st.t;
+        in.odometryIncrement = st.odometryIncrement;
+        if (st.odometryIncrement && lastOdoT) in.odometryDt = st.t - *lastOdoT;
+        if (st.odometryIncrement || st.odometry) lastOdoT = st.t;
+        in.rfid = st.rfid;
+        in.rb = st.rb;
+        if (motion.interpolate_polls) {
+            // Absolute odometry from the increments the filters would use.
+            const bool anchor = !odo && (st.odometry || st.odometryIncrement);
+            if (anchor) odo = mrpt::poses::CPose2D();
+            if (st.odometryIncrement) odo = *odo + *st.odometryIncrement;
+            raw.push_back({st.t, anchor || st.odometryIncrement ? odo : std::nullopt,
+                           st.rfid, st.rb});
+        }
+        l.inputs.push_back(std::move(in));
+    }
+    if (l.inputs.empty()) throw std::runtime_error(path + ": no sensing instant");
+    if (motion.interpolate_polls)
+        l.inputs = rfir::slam::interpolatedInputs(raw, motion.odometry_latency);
+    l.info = info.finish();
+    return l;
+}
+
+/** Where the filter starts: --start, else the rawlog header's start pose,
+ * else (no header, e.g. a rawlog cut by rawlog-edit) the first odometry pose
+ * (the simulator's odometry starts at the true pose), said on stderr. */
+mrpt::poses::CPose2D startPose(const TAppArgs& a, const TLoaded& d) {
+    if (a.start) return *a.start;
+    if (d.header.startPose) return *d.header.startPose;
+    const auto p = d.firstOdometry.value_or(mrpt::poses::CPose2D());
+    std::ostringstream o;
+    o << "rfir-slam: warning: " << a.rawlog
+      << (d.hasHeader ? ": the rfir log header gives no start pose"
+                      : ": no rfir log header (cut by rawlog-edit?)")
+      << "; assumed: start pose " << p.x() << " " << p.y() << " " << p.phi()
+      << (d.firstOdometry ? " (the first odometry pose)" : " (no odometry pose)")
+      << " (set it with --start X Y PHI)";
+    if (!d.hasHeader) {
+        o << "; RFID readers from the observations:";
+        for (const auto& r : d.info.readers)
+            o << " " << r.id << " (" << r.x << ", " << r.y << ", " << 2 * r.halfX << " x "
+              << 2 * r.halfY << " m)";
+        if (d.info.readers.empty()) o << " none";
+    }
+    std::cerr << o.str() << "\n";
+    return p;
+}
+
+/** The ground truth of a run, loaded once for every set of outputs. */
+struct TTruth {
+    std::optional<TPath2D> path;
+    std::optional<TMapFile> map;
+    std::optional<TPath2D> odometry;  //!< aligned at the start to `path`
+    std::optional<rfir::eval::TRobotErrors> odometryErrors;
+    std::vector<rfir::obs::TRFIDReader> readers;
+    std::optional<rfir::obs::TRBSensor> rbSensor;
+};
+
+TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
+    TTruth t;
+    t.readers = info.readers;  // also drawn in the 3D scene, truth or not
+    t.rbSensor = info.rbSensor;
+    if (!a.gtPath) {
+        if (a.gtMap)
+            std::cerr
+                << "rfir-slam: --gt-map without a ground-truth path: no error table\n";
+        return t;
+    }
+    t.path = rfir::common::loadTUM(*a.gtPath);
+    if (!info.odometry.empty()) {
+        // From where the filter starts, as rfir-eval does.
+        t.odometry = rfir::eval::deadReckoning(
+            info.odometry, a.start ? a.start : info.startPose, *t.path);
+        t.odometryErrors = rfir::eval::computeRobotErrors(*t.odometry, *t.path);
+    }
+    if (a.gtMap) t.map = rfir::common::loadMapFile(*a.gtMap);
+    return t;
+}
+
+std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
+                      uint64_t seed, const std::string& identity,
+                      const std::string& smoother) {
+    size_t tags = 0, lms = 0;
+    for (const auto& l : run.map) (l.isTag ? tags : lms)++;
+    std::ostringstream o;
+    o << std::setprecision(9) << "{\"method\": \"" << cfg.slam.method
+      << "\", \"seed\": " << seed << ", \"steps\": " << run.path.size()
+      << ", \"tags_mapped\": " << tags << ", \"landmarks_mapped\": " << lms
+      << ", \"robot_particles\": " << cfg.slam.robot_particles
+      << ", \"mean_update_time_s\": " << run.meanStepTime
+      << ", \"max_update_time_s\": " << run.maxStepTime
+      << ", \"total_time_s\": " << run.totalTime << ", \"kidnap_resets\": " << run.resets
+      << ", \"kidnap_reset_times_s\": [";
+    for (size_t k = 0; k < run.resetTimes.size(); k++)
+        o << (k ? ", " : "") << run.resetTimes[k];
+    o << "]" << smoother << ", \"run\": " << identity << "}\n";
+    return o.str();
+}
+
+const std::vector<std::string> kOutputPatterns = {
+    "path*.tum",      "map*.txt",        "path_map*.png", "errors*.json",
+    "scene*.3Dscene", "error_time*.png", "settings.ini",  "stats.json"};
+
+/** settings.ini and stats.json, last: they name the run and every file it wrote. */
+void writeSettingsAndStats(rfir::common::COutputFolder& out,
+                           const rfir::slam::TSlamConfig& cfg,
+                           const rfir::slam::TSlamRun& run, uint64_t seed,
+                           const std::string& ini, const std::string& smoother) {
+    const std::string settingsPath = out.file("settings.ini");
+    const std::string statsPath = out.file("stats.json");
+    const auto files = out.files();
+    const std::string id = rfir::common::runIdentityJson(seed, ini, files);
+    std::string list;
+    for (const auto& f : files) list += " " + f;
+    const std::string settings = "# rfir-slam " + rfir::common::rfirVersion() + ": " +
+                                 rfir::common::processCommandLine() + "\n# seed " +
+                                 std::to_string(seed) + ", INI " + ini + " (md5 " +
+                                 rfir::common::fileMD5(ini) + ")\n# files:" + list +
+                                 "\n" + rfir::slam::dumpSlamConfig(cfg);
+    rfir::common::writeFileAtomically(settingsPath,
+                                      [&](std::ostream& o) { o << settings; });
+    rfir::common::writeFileAtomically(statsPath, [&](std::ostream& o) {
+        o << statsJson(cfg, run, seed, id, smoother);
+    });
+}
+
+/** Ground truth beside the rawlog unless given. */
+void findGroundTruth(TAppArgs& a) {
+    const std::string base = withoutRawlogExt(a.rawlog);
+    if (!a.gtPath && mrpt::system::fileExists(base + ".gt.tum"))
+        a.gtPath = base + ".gt.tum";
+    if (!a.gtMap && mrpt::system::fileExists(base + ".gt_map.txt"))
+        a.gtMap = base + ".gt_map.txt";
+}
+
+/** Errors against the ground truth, if there is one (fig gets the truth). */
+std::optional<rfir::eval::TEvalResult> evaluate(const TTruth& truth,
+                                                const std::string& label,
+                                                const TPath2D& est,
+                                                const TMapFile& estMap,
+                                                rfir::eval::TMapFigure& fig) {
+    if (!truth.path) return std::nullopt;
+    const TPath2D& gt = *truth.path;
+    rfir::eval::TEvalResult r;
+    r.label = label;
+    fig.gtPath = gt;
+    r.robot = rfir::eval::computeRobotErrors(est, gt);
+    if (truth.odometry) fig.odomPath = *truth.odometry;
+    r.odometry = truth.odometryErrors;
+    if (truth.map) {
+        const TMapFile& gtm = *truth.map;
+        fig.gtMap = gtm;
+        bool anyTag = false;
+        for (const auto& e : estMap) anyTag |= e.kind == TMapEntry::Kind::Tag;
+        const auto kind =
+            anyTag || estMap.empty() ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark;
+        r.map = rfir::eval::computeMapErrors(estMap, gtm, kind);
+        if (kind == TMapEntry::Kind::Tag && !truth.readers.empty())
+            rfir::eval::setPassedOver(
+                *r.map, rfir::eval::tagsPassedOver(gtm, gt, truth.readers), estMap);
+        else if (kind == TMapEntry::Kind::Landmark && truth.rbSensor)
+            rfir::eval::setPassedOver(
+                *r.map, rfir::eval::landmarksInView(gtm, gt, *truth.rbSensor), estMap);
+    }
+    return r;
+}
+
+void writeErrors(const std::string& file, const rfir::eval::TEvalResult& r) {
+    rfir::common::writeFileAtomically(
+        file, [&](std::ostream& o) { o << rfir::eval::toJson(r) << "\n"; });
+}
+
+/** path<sfx>.tum, map<sfx>.txt, path_map<sfx>.png and errors<sfx>.json of a
+ * run, named `label` in the table, the figure and the map's header. */
+std::optional<rfir::eval::TEvalResult> writeAndScore(
+    const TAppArgs& a, rfir::common::COutputFolder& out, const TTruth& truth,
+    const rfir::slam::TSlamRun& run, const std::string& sfx, const std::string& label,
+    const std::string& legend) {
+    const TPath2D path = rfir::slam::stampedPath(run);
+    const TMapFile map = rfir::slam::landmarkEntries(run.map);
+    rfir::common::saveTUM(out.file("path" + sfx + ".tum"), path);
+    rfir::common::saveMapFile(out.file("map" + sfx + ".txt"), map,
+                              "rfir-slam " + label + ": " + legend);
+    rfir::eval::TMapFigure fig;
+    fig.title = "rfir-slam " + label + ": " + mrpt::system::extractFileName(a.rawlog);
+    fig.estPath = path;
+    fig.estMap = map;
+    auto r = evaluate(truth, label, path, map, fig);
+    rfir::eval::plotMapFigure(out.file("path_map" + sfx + ".png"), fig);
+    rfir::eval::saveScene3D(out.file("scene" + sfx + ".3Dscene"), fig, truth.readers);
+    if (r) {
+        writeErrors(out.file("errors" + sfx + ".json"), *r);
+        rfir::eval::plotErrorsOverTime(out.file("error_time" + sfx + ".png"), {*r},
+                                       fig.title);
+    }
+    return r;
+}
+
+/** --smooth: the offline refinement of the filter's run and its outputs. */
+std::optional<rfir::eval::TEvalResult> smoothAndWrite(
+    const TAppArgs& a, rfir::common::COutputFolder& out,
+    const rfir::slam::TSlamConfig& cfg, const TLoaded& data, const TTruth& truth,
+    const mrpt::poses::CPose2D& start, const rfir::slam::TSlamRun& run,
+    std::string& stats) {
+    const auto p = rfir::slam::smootherParams(cfg);
+    logStream(a) << "rfir-slam: smoothing " << run.path.size() << " poses offline ("
+                 << p.options.solver << ")\n";
+    const auto res = rfir::slam::smoothRun(data.inputs, start, run, p);
+    logStream(a) << "rfir-slam: smoothed in " << res.iterations << " iterations, "
+                 << res.seconds << " s (" << res.reads << " reads, " << res.negatives
+                 << " polls without the tag; cost " << res.initialCost << " -> "
+                 << res.finalCost << ")\n";
+    std::ostringstream o, cuts;
+    o << std::setprecision(9);
+    for (size_t k = 0; k < res.cutTimes.size(); k++) {
+        cuts << (k ? ", " : "") << res.cutTimes[k];
+        logStream(a) << "rfir-slam: smoother cut the odometry at t = " << std::fixed
+                     << std::setprecision(2) << res.cutTimes[k] << " s (kidnapping)\n"
+                     << std::defaultfloat;
+    }
+    logStream(a) << std::setprecision(6)
+                 << "rfir-slam: odometry systematic error: translation scale "
+                 << res.odometryScale << ", heading drift " << res.headingDriftPerMetre
+                 << " rad/m\n";
+    o << ", \"smoother\": {\"solver\": \"" << p.options.solver
+      << "\", \"iterations\": " << res.iterations << ", \"time_s\": " << res.seconds
+      << ", \"reads\": " << res.reads << ", \"negative_reads\": " << res.negatives
+      << ", \"odometry_scale\": " << res.odometryScale
+      << ", \"heading_drift_rad_per_m\": " << res.headingDriftPerMetre
+      << ", \"odometry_cut_times_s\": [" << cuts.str() << "]}";
+    stats = o.str();
+    return writeAndScore(a, out, truth, res.run, "_smoothed",
+                         cfg.slam.method + " smoothed", "<tag> <id> <x> <y> <sx> <sy>");
+}
+}  // namespace
+
+std::string stockConfigPath(const std::string& method) {
+    const std::string m = method == "fastslam" ? "fastslam"
+                          : method == "ps"     ? "ps"
+                                               : "pf";
+    return rfir::common::stockConfigDir() + "/slam_" + m + ".ini";
+}
+
+int runSlamApp(const TAppArgs& args) {
+    TAppArgs a = args;
+    if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
+    const std::string ini =
+        a.config ? *a.config : stockConfigPath(a.method.value_or("pf"));
+    rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
+    cfg.seed = a.seed;
+    findGroundTruth(a);
+
+    logStream(a) << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "
+                 << ini << ", seed " << a.seed << ")\n";
+    // The folder is checked (and refused if it holds foreign files) before the run.
+    rfir::common::COutputFolder out(a.outDir, kOutputPatterns, "rfir-slam");
+    TLoaded data = readInputs(a.rawlog, cfg.motion);
+    // Refused before the filter runs and anything is written.
+    if (a.smooth)
+        for (const auto& in : data.inputs)
+            if (in.rb)
+                throw std::runtime_error(
+                    "--smooth: " + a.rawlog +
+                    " has range-bearing observations; the smoother uses RFID reads only");
+    const mrpt::poses::CPose2D start = startPose(a, data);
+    data.info.startPose = start;  // the dead-reckoning row starts there too
+    auto engine = rfir::slam::makeEngine(cfg, data.header);
+    const size_t n = data.inputs.size();
+    rfir::common::CProgress progress("rfir-slam", n, a.quiet ? nullptr : &std::cerr);
+    // Each sensor resetting gets a line when it happens (not only a count).
+    size_t reported = 0;
+    const auto run = rfir::slam::runEngine(*engine, start, data.inputs, [&](size_t i) {
+        progress.update(i);
+        const auto& rt = engine->resetTimes();
+        for (; reported < rt.size(); reported++)
+            logStream(a) << "rfir-slam: kidnap detected, sensor resetting at t = "
+                         << std::fixed << std::setprecision(2) << rt[reported] << " s\n"
+                         << std::defaultfloat;
+    });
+    progress.finish();
+
+    const TTruth truth = loadTruth(a, data.info);
+    const bool counts = cfg.method() != rfir::slam::TMethod::FastSLAM;
+    auto errs = writeAndScore(
+        a, out, truth, run, "", cfg.slam.method,
+        counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
+               : "<tag or landmark> <id> <x> <y> <sx> <sy>");
+    std::optional<rfir::eval::TEvalResult> smoothed;
+    std::string smootherStats;
+    if (a.smooth)
+        smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run, smootherStats);
+    writeSettingsAndStats(out, cfg, run, a.seed, ini, smootherStats);
+    out.commit();
+    std::vector<rfir::eval::TEvalResult> rows;
+    if (errs) rows.push_back(std::move(*errs));
+    if (smoothed) {
+        smoothed->odometry.reset();  // the odometry row is printed once
+        rows.push_back(std::move(*smoothed));
+    }
+    if (!rows.empty() && !a.quiet) std::cout << rfir::eval::formatErrorTable(rows);
+    logStream(a) << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()
+                 << " landmarks, " << std::fixed << std::setprecision(2)
+                 << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir
+                 << "\n";
+    return 0;
+}
+
+}  // namespace rfir::slamapp

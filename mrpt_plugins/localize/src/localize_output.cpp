@@ -180,7 +180,7 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
     // stale errors.txt of a run with ground truth cannot outlive it.
     rfir::common::COutputFolder out(cfg.outDir,
                                     {"path.tum", "stats.json", "settings.ini",
-                                     "errors.txt", "path.png", "emitters.txt"},
+                                     "errors.txt", "path.png", "emitter_health.txt"},
                                     "rfir-localize");
     const TEvals ev = evaluate(cfg, res);
     std::string table;
@@ -190,7 +190,7 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
         rfir::common::writeFileAtomically(out.file("errors.txt"),
                                           [&](std::ostream& o) { o << table; });
     plot(cfg, res, ev, out.file("path.png"));
-    if (!cfg.odometryOnly) writeEmitterReport(cfg, res, out.file("emitters.txt"));
+    if (!cfg.odometryOnly) writeEmitterReport(cfg, res, out.file("emitter_health.txt"));
     const std::string stats = out.file("stats.json"), settings = out.file("settings.ini");
     const auto files = out.files();
     std::string list;

@@ -68,9 +68,8 @@ TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
     ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
                           "' --seed 5")),
               0);
-    for (const char* f :
-         {"path.tum", "stats.json", "settings.ini", "path.png", "errors.txt",
-          "emitter_health.txt"})
+    for (const char* f : {"path.tum", "stats.json", "settings.ini", "path.png",
+                          "errors.txt", "emitter_health.txt"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     const auto path = rfir::common::loadTUM(out + "/path.tum");
     EXPECT_GT(path.size(), 200u);
@@ -88,9 +87,9 @@ TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
         size_t lines = 0;
         for (std::string l; std::getline(h, l);)
             if (!l.empty() && l[0] != '#') lines++;
-        EXPECT_EQ(lines, rfir::ir::TEmitterSet::load(kDir + "/run.gt_map.txt")
-                             .emitters()
-                             .size());
+        EXPECT_EQ(
+            lines,
+            rfir::ir::TEmitterSet::load(kDir + "/run.gt_map.txt").emitters().size());
     }
     EXPECT_NE(slurp(out + "/errors.txt").find("IR MCL (spots)"), std::string::npos);
     // settings.ini + the same seed gives the same path, byte for byte.

@@ -3,6 +3,7 @@
  * and the layout planner. */
 #include <rfir/common/map_io.h>
 #include <rfir/common/trajectory_io.h>
+#include <rfir/ir/emitter_set.h>
 #include <rfir/ir/id_planner.h>
 #include <rfir/sim/simulator.h>
 
@@ -67,8 +68,8 @@ TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
     ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
                           "' --seed 5")),
               0);
-    for (const char* f :
-         {"path.tum", "stats.json", "settings.ini", "path.png", "errors.txt"})
+    for (const char* f : {"path.tum", "stats.json", "settings.ini", "path.png",
+                          "errors.txt", "emitter_health.txt"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     const auto path = rfir::common::loadTUM(out + "/path.tum");
     EXPECT_GT(path.size(), 200u);
@@ -76,6 +77,20 @@ TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
     EXPECT_NE(stats.find("\"first_unique_time\": "), std::string::npos);
     EXPECT_NE(stats.find("\"path_errors\""), std::string::npos);
     EXPECT_NE(stats.find("\"spot_errors\""), std::string::npos);
+    // A clean run: no lost track, no failed or inconsistent emitter.
+    EXPECT_NE(stats.find("\"lost_events\": []"), std::string::npos);
+    EXPECT_NE(stats.find("\"emitters_failed\": []"), std::string::npos);
+    EXPECT_NE(stats.find("\"emitters_inconsistent\": []"), std::string::npos);
+    {
+        // One line per emitter of the map after the two comment lines.
+        std::istringstream h(slurp(out + "/emitter_health.txt"));
+        size_t lines = 0;
+        for (std::string l; std::getline(h, l);)
+            if (!l.empty() && l[0] != '#') lines++;
+        EXPECT_EQ(
+            lines,
+            rfir::ir::TEmitterSet::load(kDir + "/run.gt_map.txt").emitters().size());
+    }
     EXPECT_NE(slurp(out + "/errors.txt").find("IR MCL (spots)"), std::string::npos);
     // settings.ini + the same seed gives the same path, byte for byte.
     ASSERT_EQ(sh(localize("--config '" + out + "/settings.ini' --out-dir '" + out2 +

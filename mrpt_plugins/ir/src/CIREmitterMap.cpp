@@ -28,6 +28,7 @@ RFIR_REGISTER_CLASS(CIREmitterMap, rfir::maps::CIREmitterMap)
 
 void CIREmitterMap::loadEmitterFile(const std::string& path) {
     m_emitters = rfir::ir::TEmitterSet::load(path);
+    m_weights.clear();
 }
 
 double CIREmitterMap::verticalDistance(const rfir::ir::TEmitter& e,
@@ -73,15 +74,18 @@ double CIREmitterMap::observationLogLikelihood(const CObservationIRSignals& obs,
             const double R = std::min(rfir::ir::TEmitterSet::kGridCell,
                                       lp.missRadiusFraction * lp.curve.visibleRadius(h));
             const auto q = rfir::ir::receiverInWorld(robot, r.receiver);
-            if (m_emitters.nearestWithin(q.x, q.y, R)) ll += lp.missLogLik;
+            // An emitter known to have failed (weight 0) says nothing by its silence.
+            const auto k = m_emitters.nearestIndexWithin(q.x, q.y, R);
+            if (k && (*k >= m_weights.size() || m_weights[*k] != 0)) ll += lp.missLogLik;
             continue;
         }
         const auto idx = associate(r, robot);
         if (!idx) continue;
         const auto& e = m_emitters.emitters()[*idx];
-        ll += rfir::ir::readingLogLikelihood(
-            r.volts, rfir::ir::receiverInWorld(robot, r.receiver), e,
-            verticalDistance(e, r.receiver), likelihoodOptions.params);
+        const double w = *idx < m_weights.size() ? m_weights[*idx] : 1.0;
+        ll += w * rfir::ir::readingLogLikelihood(
+                      r.volts, rfir::ir::receiverInWorld(robot, r.receiver), e,
+                      verticalDistance(e, r.receiver), likelihoodOptions.params);
     }
     return ll;
 }
@@ -102,6 +106,7 @@ bool CIREmitterMap::internal_canComputeObservationLikelihood(
 void CIREmitterMap::internal_clear() {
     m_emitters = {};
     m_reference.reset();
+    m_weights.clear();
 }
 
 // The map is known in advance (thesis 5.1): observations do not change it.
@@ -138,7 +143,7 @@ std::string CIREmitterMap::asString() const {
 }
 
 uint8_t CIREmitterMap::serializeGetVersion() const {
-    return 3;
+    return 4;
 }
 
 void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
@@ -147,7 +152,8 @@ void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
         << p.curve.maxDistance << uint8_t(p.curve.heightModel) << p.sigmaVolts
         << p.sigmaBelief << p.outOfRangeLogLik << uint8_t(likelihoodOptions.association)
         << likelihoodOptions.verticalDistance << p.missLogLik << p.missRadiusFraction
-        << p.areaMargin << p.outOfAreaLogLik << p.outOfRangeRamp;
+        << p.areaMargin << p.outOfAreaLogLik << p.outOfRangeRamp << p.voltOutlierWeight
+        << p.voltOutlierRange;
     out.WriteAs<uint32_t>(m_emitters.emitters().size());
     for (const auto& e : m_emitters.emitters()) out << e.id << e.x << e.y << e.z;
     out << bool(m_reference);
@@ -155,7 +161,7 @@ void CIREmitterMap::serializeTo(mrpt::serialization::CArchive& out) const {
 }
 
 void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version > 3) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    if (version > 4) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     auto& p = likelihoodOptions.params;
     uint8_t hm = 0, as = 0;
     in >> p.curve.c0 >> p.curve.c1 >> p.curve.c2 >> p.curve.fitHeight >>
@@ -176,6 +182,12 @@ void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ver
         in >> p.outOfRangeRamp;
     else
         p.outOfRangeRamp = 0;  // a step before version 3
+    if (version >= 4)
+        in >> p.voltOutlierWeight >> p.voltOutlierRange;
+    else {
+        p.voltOutlierWeight = 0;  // eq. 5.2 alone before version 4
+        p.voltOutlierRange = 4;
+    }
     likelihoodOptions.association = TAssociation(as);
     using B = rfir::obs::TReadBounds;
     constexpr const char* kWhat = "CIREmitterMap";
@@ -186,6 +198,7 @@ void CIREmitterMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ver
         in >> e.x >> e.y >> e.z;
     }
     m_emitters = rfir::ir::TEmitterSet(std::move(em));
+    m_weights.clear();
     m_reference.reset();
     if (rfir::obs::readStrictBool(in, kWhat)) {
         mrpt::math::TPose2D r;

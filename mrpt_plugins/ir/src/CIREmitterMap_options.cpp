@@ -35,7 +35,9 @@ const std::vector<std::string>& CIREmitterMap::TLikelihoodOptions::allowedKeys()
                                                "miss_radius_fraction",
                                                "area_margin",
                                                "out_of_area_loglik",
-                                               "out_of_range_ramp"};
+                                               "out_of_range_ramp",
+                                               "volt_outlier_weight",
+                                               "volt_outlier_range"};
     return k;
 }
 
@@ -63,6 +65,10 @@ void CIREmitterMap::TLikelihoodOptions::loadFromConfigFile(
         "miss_radius_fraction", params.missRadiusFraction, R::closed(0, 1));
     params.outOfRangeRamp =
         s_sec.getDouble("out_of_range_ramp", params.outOfRangeRamp, R::closed(0, 1000));
+    params.voltOutlierWeight =
+        s_sec.getDouble("volt_outlier_weight", params.voltOutlierWeight, R::closed(0, 1));
+    params.voltOutlierRange = s_sec.getDouble(
+        "volt_outlier_range", params.voltOutlierRange, R::closed(1e-3, 1000));
     params.areaMargin =
         s_sec.getDouble("area_margin", params.areaMargin, R::closed(0, 1000));
     params.outOfAreaLogLik =
@@ -87,6 +93,8 @@ void CIREmitterMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const 
       << "miss_loglik         = " << params.missLogLik << "\n"
       << "miss_radius_fraction = " << params.missRadiusFraction << "\n"
       << "out_of_range_ramp   = " << params.outOfRangeRamp << "\n"
+      << "volt_outlier_weight = " << params.voltOutlierWeight << "\n"
+      << "volt_outlier_range  = " << params.voltOutlierRange << "\n"
       << "area_margin         = " << params.areaMargin << "\n"
       << "out_of_area_loglik  = " << params.outOfAreaLogLik << "\n"
       << "association         = " << kAssociations[size_t(association)] << "\n"

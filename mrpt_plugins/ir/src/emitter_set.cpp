@@ -116,11 +116,11 @@ void TEmitterSet::buildGrid() {
         m_grid[cellKey(cellOf(m_emitters[i].x), cellOf(m_emitters[i].y))].push_back(i);
 }
 
-std::optional<double> TEmitterSet::nearestWithin(double x, double y,
-                                                 double radius) const {
+std::optional<size_t> TEmitterSet::nearestIndexWithin(double x, double y,
+                                                      double radius) const {
     const int64_t cx = cellOf(x), cy = cellOf(y);
     double best = radius * radius;
-    bool found = false;
+    std::optional<size_t> found;
     for (int64_t ix = cx - 1; ix <= cx + 1; ix++)
         for (int64_t iy = cy - 1; iy <= cy + 1; iy++) {
             const auto it = m_grid.find(cellKey(ix, iy));
@@ -130,11 +130,18 @@ std::optional<double> TEmitterSet::nearestWithin(double x, double y,
                 const double d2 = dx * dx + dy * dy;
                 if (d2 <= best) {
                     best = d2;
-                    found = true;
+                    found = i;
                 }
             }
         }
-    if (!found) return std::nullopt;
-    return best;
+    return found;
+}
+
+std::optional<double> TEmitterSet::nearestWithin(double x, double y,
+                                                 double radius) const {
+    const auto i = nearestIndexWithin(x, y, radius);
+    if (!i) return std::nullopt;
+    const double dx = m_emitters[*i].x - x, dy = m_emitters[*i].y - y;
+    return dx * dx + dy * dy;
 }
 }  // namespace rfir::ir

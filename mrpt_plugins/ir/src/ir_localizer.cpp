@@ -34,7 +34,10 @@ mrpt::math::CMatrixDouble33 TMotionNoise::covariance(
 
 CIRLocalizer::CIRLocalizer(std::shared_ptr<rfir::maps::CIREmitterMap> map,
                            const TLocalizerParams& p, uint64_t seed)
-    : m_map(std::move(map)), m_params(p), m_pdf(p.numParticles) {
+    : m_map(std::move(map)),
+      m_params(p),
+      m_pdf(p.numParticles),
+      m_monitor(p.robust, m_map ? m_map->emitters().emitters().size() : 0) {
     if (!m_map || m_map->isEmpty())
         throw std::invalid_argument("CIRLocalizer: the emitter map is empty");
     // MRPT's motion sampling and resampling draw from the global generator.
@@ -62,6 +65,14 @@ CIRLocalizer::CIRLocalizer(std::shared_ptr<rfir::maps::CIREmitterMap> map,
     }
 }
 
+double CIRLocalizer::positionStd() const {
+    const auto [cov, mean] = m_pdf.getCovarianceAndMean();
+    // Largest standard deviation of the position (2x2 block eigenvalue).
+    const double a = cov(0, 0), b = cov(0, 1), c = cov(1, 1);
+    const double lmax = 0.5 * (a + c) + std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+    return std::sqrt(std::max(0.0, lmax));
+}
+
 std::optional<mrpt::math::TPose2D> CIRLocalizer::associationReference() const {
     const auto [cov, mean] = m_pdf.getCovarianceAndMean();
     // Largest standard deviation of the position (2x2 block eigenvalue).
@@ -80,7 +91,8 @@ mrpt::poses::CPose2D CIRLocalizer::estimate() const {
 }
 
 CObservationIRSignals::Ptr CIRLocalizer::prepare(const CObservationIRSignals& in,
-                                                 TLocalizerStep& info) const {
+                                                 TLocalizerStep& info,
+                                                 TSeen& seen) const {
     auto out = CObservationIRSignals::Create();
     out->timestamp = in.timestamp;
     out->sensorLabel = in.sensorLabel;
@@ -98,6 +110,7 @@ CObservationIRSignals::Ptr CIRLocalizer::prepare(const CObservationIRSignals& in
         const bool undecoded = r.codes.empty() && r.hasRaw();
         r.raw.clear();
         r.rateHz = 0;
+        seen.emplace_back(r.receiver, r.codes.empty() ? "" : emitterIdFromCodes(r.codes));
         if (undecoded) continue;
         if (r.codes.empty()) {
             // Nothing in view: negative information, once estimating.
@@ -132,16 +145,21 @@ void CIRLocalizer::predict(const mrpt::poses::CPose2D& incr) {
 }
 
 TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& incr,
-                                  const CObservationIRSignals* ir) {
+                                  const CObservationIRSignals* ir,
+                                  std::optional<double> t) {
     TLocalizerStep info;
     CObservationIRSignals::Ptr obs;
-    if (ir) obs = prepare(*ir, info);
+    TSeen seen;
+    if (ir) obs = prepare(*ir, info, seen);
     if (incr) predict(*incr);
     const bool byEstimate = m_map->likelihoodOptions.association ==
                             rfir::maps::CIREmitterMap::TAssociation::Estimate;
     // Eq. 5.1 is evaluated against the predicted estimate, once per step.
     m_map->setAssociationReference(byEstimate && m_started ? associationReference()
                                                            : std::nullopt);
+    // Readings that contradict the predicted particles are outliers, unless
+    // enough unique IDs agree that the track is lost.
+    const auto lostAt = obs ? gate(*obs, info) : std::nullopt;
     bool unique = false;
     if (obs)
         for (const auto& r : obs->readings)
@@ -149,7 +167,16 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
                                                         emitterIdFromCodes(r.codes)));
     // The first unique ID starts the estimation: the uniform prior is then
     // replaced by poses drawn from the reading. Later, sensor resetting.
-    if (unique && !m_started && m_params.startFromReading)
+    if (lostAt) {
+        // Redraw every particle from the reading that declared it.
+        auto& rs = obs->readings;
+        std::rotate(rs.begin(), rs.begin() + long(*lostAt), rs.end());
+        info.lost = true;
+        info.lostId = emitterIdFromCodes(rs.front().codes);
+        info.resetParticles = sensorReset(*obs, true);
+        m_monitor.clearAfterReset();
+        m_recovering = true;
+    } else if (unique && !m_started && m_params.startFromReading)
         info.resetParticles = sensorReset(*obs, true);
     else if (unique && m_params.sensorResetting)
         info.resetParticles = sensorReset(*obs, false);
@@ -162,6 +189,12 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
     info.justStarted = unique && !m_started;
     m_started = m_started || unique;
     info.started = m_started;
+    noteSilence(ir, t, seen);
+    if (m_started && !seen.empty()) checkEmitters(seen);
+    if (m_recovering && positionStd() < m_params.robust.gateMaxStd) {
+        m_recovering = false;
+        info.settled = true;
+    }
     return info;
 }
 

@@ -34,17 +34,40 @@ void readArea(const rfir::ini::CIniSection& s_sec, TLocalizerParams& p) {
     p.initY1 = v[3];
     p.initAreaSet = true;
 }
+
+void readRobust(const rfir::ini::CIniSection& s, TRobustParams& r) {
+    r.gateMaxStd = s.getDouble("gate_max_std", r.gateMaxStd, R::closed(0, 1000));
+    r.gateLogLik = s.getDouble("gate_loglik", r.gateLogLik, R::closed(-1e6, 0));
+    r.gateMinFraction =
+        s.getDouble("gate_min_fraction", r.gateMinFraction, R::closed(0, 1));
+    r.lostMinReadings =
+        size_t(s.getInt("lost_min_readings", int64_t(r.lostMinReadings), 1, 1000000));
+    r.lostMinIds = size_t(s.getInt("lost_min_ids", int64_t(r.lostMinIds), 1, 1000));
+    // The emitter lookup grid bounds the radius (TEmitterSet::kGridCell).
+    r.emitterCheckRadius = s.getDouble("emitter_check_radius", r.emitterCheckRadius,
+                                       R::closed(0, TEmitterSet::kGridCell));
+    r.emitterMinChecks =
+        size_t(s.getInt("emitter_min_checks", int64_t(r.emitterMinChecks), 1, 1000000));
+    r.inconsistentWeight =
+        s.getDouble("inconsistent_weight", r.inconsistentWeight, R::closed(0, 1));
+}
 }  // namespace
 
 void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                           const std::string& prefix) {
     const std::string s = prefix + "localization";
-    const rfir::ini::CIniSection s_sec(
-        c, s,
-        {"num_particles", "init_area", "init_margin", "start_from_reading",
-         "sensor_resetting", "reset_min_fraction", "reset_ratio", "reset_distance_sigma",
-         "reset_view_margin", "repeated_before_unique", "association_max_std",
-         "ess_threshold", "resampling", "decode_raw"});
+    const rfir::ini::CIniSection s_sec(c, s,
+                                       {"num_particles",       "init_area",
+                                        "init_margin",         "start_from_reading",
+                                        "sensor_resetting",    "reset_min_fraction",
+                                        "reset_ratio",         "reset_distance_sigma",
+                                        "reset_view_margin",   "repeated_before_unique",
+                                        "association_max_std", "ess_threshold",
+                                        "resampling",          "decode_raw",
+                                        "gate_max_std",        "gate_loglik",
+                                        "gate_min_fraction",   "lost_min_readings",
+                                        "lost_min_ids",        "emitter_check_radius",
+                                        "emitter_min_checks",  "inconsistent_weight"});
     numParticles =
         size_t(s_sec.getInt("num_particles", int64_t(numParticles), 1, 10000000));
     readArea(s_sec, *this);
@@ -65,6 +88,7 @@ void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     resampling = mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm(
         s_sec.getEnum("resampling", kResampling, size_t(resampling)));
     decodeRaw = s_sec.getBool("decode_raw", decodeRaw);
+    readRobust(s_sec, robust);
 
     const std::string m = prefix + "motion";
     const rfir::ini::CIniSection m_sec(
@@ -103,7 +127,15 @@ void TLocalizerParams::dumpToTextStream(std::ostream& o) const {
       << "association_max_std = " << associationMaxStd << "\n"
       << "ess_threshold = " << essThreshold << "\n"
       << "resampling = " << kResampling[size_t(resampling)] << "\n"
-      << "decode_raw = " << b(decodeRaw) << "\n\n"
+      << "decode_raw = " << b(decodeRaw) << "\n"
+      << "gate_max_std = " << robust.gateMaxStd << "\n"
+      << "gate_loglik = " << robust.gateLogLik << "\n"
+      << "gate_min_fraction = " << robust.gateMinFraction << "\n"
+      << "lost_min_readings = " << robust.lostMinReadings << "\n"
+      << "lost_min_ids = " << robust.lostMinIds << "\n"
+      << "emitter_check_radius = " << robust.emitterCheckRadius << "\n"
+      << "emitter_min_checks = " << robust.emitterMinChecks << "\n"
+      << "inconsistent_weight = " << robust.inconsistentWeight << "\n\n"
       << "[motion]\n"
       << "k_xy = " << motion.kXY << "\n"
       << "k_phi_rot = " << motion.kPhiRot << "\n"

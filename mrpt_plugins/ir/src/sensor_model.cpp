@@ -13,6 +13,15 @@ double voltageLogLikelihood(double v, double vExpected, double sigma) {
     return -e * e / (2 * sigma * sigma);
 }
 
+double voltageMixtureLogLikelihood(double v, double vExpected, double sigma, double w,
+                                   double range) {
+    const double g = voltageLogLikelihood(v, vExpected, sigma);
+    if (w <= 0) return g;
+    // Both densities relative to the Gaussian's peak 1 / (sqrt(2 pi) sigma).
+    const double u = w * std::sqrt(2 * M_PI) * sigma / range;
+    return std::log((1 - w) * std::exp(g) + u);
+}
+
 double emitterBelief(const mrpt::math::TPoint2D& e, const mrpt::math::TPoint2D& r,
                      double sigma) {
     const double dx = e.x - r.x, dy = e.y - r.y;
@@ -47,7 +56,8 @@ mrpt::math::TPoint2D receiverInWorld(const mrpt::math::TPose2D& p,
 double readingLogLikelihood(double v, const mrpt::math::TPoint2D& rcv, const TEmitter& e,
                             double h, const TIRLikelihoodParams& p) {
     const double d = std::hypot(e.x - rcv.x, e.y - rcv.y);
-    double ll = voltageLogLikelihood(v, p.curve.expected(d, h), p.sigmaVolts);
+    double ll = voltageMixtureLogLikelihood(v, p.curve.expected(d, h), p.sigmaVolts,
+                                            p.voltOutlierWeight, p.voltOutlierRange);
     const double beyond = d - p.curve.visibleRadius(h);
     if (beyond > 0)
         ll += p.outOfRangeLogLik *

@@ -68,6 +68,57 @@ TEvals evaluate(const TConfig& cfg, const TRunResult& res) {
     return ev;
 }
 
+using S = rfir::ir::TEmitterHealth::Status;
+
+std::string lostJson(const TRunResult& res) {
+    std::ostringstream o;
+    o << std::setprecision(10) << "[";
+    for (size_t i = 0; i < res.lost.size(); i++) {
+        const auto& l = res.lost[i];
+        o << (i ? ", " : "") << "{\"t\": " << l.t << ", \"emitter\": \"" << l.id
+          << "\", \"recovered_t\": ";
+        if (l.settled)
+            o << *l.settled;
+        else
+            o << "null";
+        o << "}";
+    }
+    o << "]";
+    return o.str();
+}
+
+std::string idsJson(const TConfig& cfg, const TRunResult& res, S status) {
+    std::string o = "[";
+    const auto& em = cfg.map->emitters().emitters();
+    for (size_t i = 0; i < res.emitterHealth.size() && i < em.size(); i++)
+        if (res.emitterHealth[i].status == status)
+            o += std::string(o.size() > 1 ? ", " : "") + "\"" + em[i].id + "\"";
+    return o + "]";
+}
+
+/** One line per emitter of the map: what the localizer made of it. */
+void writeEmitterReport(const TConfig& cfg, const TRunResult& res,
+                        const std::string& path) {
+    rfir::common::writeFileAtomically(path, [&](std::ostream& o) {
+        o << "# rfir-localize emitter report (docs/ir.md): id x y z readings gated "
+             "checks answered status weight\n"
+          << "# readings: attributed to it while the track was confident; gated: of "
+             "which inconsistent with the motion prior (not used); checks: times the "
+             "estimate put a receiver within emitter_check_radius of it; answered: of "
+             "which that receiver read its ID\n"
+          << std::setprecision(10);
+        const auto& em = cfg.map->emitters().emitters();
+        for (size_t i = 0; i < em.size(); i++) {
+            const rfir::ir::TEmitterHealth h = i < res.emitterHealth.size()
+                                                   ? res.emitterHealth[i]
+                                                   : rfir::ir::TEmitterHealth{};
+            o << em[i].id << " " << em[i].x << " " << em[i].y << " " << em[i].z << " "
+              << h.readings << " " << h.gated << " " << h.checks << " " << h.answered
+              << " " << rfir::ir::statusName(h.status) << " " << h.weight << "\n";
+        }
+    });
+}
+
 std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
                       const std::string& identity) {
     std::ostringstream o;
@@ -95,6 +146,10 @@ std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& e
       << "  \"poses\": " << res.path.size() << ",\n"
       << "  \"reset_events\": " << res.resetEvents << ",\n"
       << "  \"reset_particles\": " << res.resetParticles << ",\n"
+      << "  \"gated_readings\": " << res.gated << ",\n"
+      << "  \"lost_events\": " << lostJson(res) << ",\n"
+      << "  \"emitters_failed\": " << idsJson(cfg, res, S::Failed) << ",\n"
+      << "  \"emitters_inconsistent\": " << idsJson(cfg, res, S::Inconsistent) << ",\n"
       << "  \"odometry_start\": \"" << res.odometryStart << "\",\n"
       << "  \"filter_seconds\": " << res.seconds << ",\n  \"run\": " << identity;
     for (size_t i = 0; i < ev.rows.size(); i++)
@@ -123,9 +178,10 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
                          const std::string& commandLine) {
     // One set per run: staged beside --out-dir and renamed into place, so a
     // stale errors.txt of a run with ground truth cannot outlive it.
-    rfir::common::COutputFolder out(
-        cfg.outDir, {"path.tum", "stats.json", "settings.ini", "errors.txt", "path.png"},
-        "rfir-localize");
+    rfir::common::COutputFolder out(cfg.outDir,
+                                    {"path.tum", "stats.json", "settings.ini",
+                                     "errors.txt", "path.png", "emitter_health.txt"},
+                                    "rfir-localize");
     const TEvals ev = evaluate(cfg, res);
     std::string table;
     if (!ev.rows.empty()) table = rfir::eval::formatErrorTable(ev.rows);
@@ -134,6 +190,7 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
         rfir::common::writeFileAtomically(out.file("errors.txt"),
                                           [&](std::ostream& o) { o << table; });
     plot(cfg, res, ev, out.file("path.png"));
+    if (!cfg.odometryOnly) writeEmitterReport(cfg, res, out.file("emitter_health.txt"));
     const std::string stats = out.file("stats.json"), settings = out.file("settings.ini");
     const auto files = out.files();
     std::string list;

@@ -7,6 +7,25 @@
 #include <iostream>
 
 namespace rfir::localize {
+namespace {
+/** A lost track is worth a line on the console whatever -q says: the path
+ * around it is not to be trusted. */
+void reportLost(const rfir::ir::TLocalizerStep& info, double t, TRunResult& res) {
+    if (info.lost) {
+        res.lost.push_back({t, info.lostId, std::nullopt});
+        std::cerr << "rfir-localize: t = " << t
+                  << " s: track lost (unique IDs contradict it); particles redrawn "
+                     "from emitter "
+                  << info.lostId << "\n";
+    }
+    if (info.settled && !res.lost.empty() && !res.lost.back().settled) {
+        res.lost.back().settled = t;
+        std::cerr << "rfir-localize: t = " << t << " s: track recovered ("
+                  << t - res.lost.back().t << " s after it was lost)\n";
+    }
+}
+}  // namespace
+
 TRunResult runLocalization(const TConfig& cfg,
                            const std::optional<mrpt::poses::CPose2D>& gtStart) {
     TRunResult res;
@@ -33,7 +52,7 @@ TRunResult runLocalization(const TConfig& cfg,
         if (!loc) continue;
         rfir::ir::TLocalizerStep info;
         try {
-            info = loc->step(st.odometryIncrement, st.ir.get());
+            info = loc->step(st.odometryIncrement, st.ir.get(), st.t);
         } catch (const std::exception& e) {
             throw std::runtime_error(
                 cfg.rawlogPath + ": instant " + std::to_string(st.index) +
@@ -48,6 +67,8 @@ TRunResult runLocalization(const TConfig& cfg,
             res.resetParticles += info.resetParticles;
         }
         if (info.justStarted) res.firstUniqueTime = st.t;
+        res.gated += info.gated;
+        reportLost(info, st.t, res);
         if (info.started) res.path.push_back({st.t, loc->estimate()});
         if (!cfg.quiet && res.steps % 500 == 0)
             std::cerr << "rfir-localize: t = " << st.t << " s, " << res.steps
@@ -57,6 +78,7 @@ TRunResult runLocalization(const TConfig& cfg,
     res.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (cfg.odometryOnly) res.path = res.odometry;
+    if (loc) res.emitterHealth = loc->emitterHealth();
     return res;
 }
 

@@ -42,6 +42,8 @@ class TEmitterSet {
     /** Squared horizontal distance from (x, y) to the nearest emitter, if one
      * lies within `radius` (<= kGridCell) of it; a grid lookup, O(1). */
     std::optional<double> nearestWithin(double x, double y, double radius) const;
+    /** Index of that nearest emitter (same lookup). */
+    std::optional<size_t> nearestIndexWithin(double x, double y, double radius) const;
     /** Cell side of the lookup grid (m): the largest radius nearestWithin takes. */
     static constexpr double kGridCell = 0.5;
 

@@ -6,6 +6,7 @@
  * particles from a unique-ID reading when too few particles agree with it. */
 #pragma once
 
+#include <rfir/ir/track_monitor.h>
 #include <rfir/maps/CIREmitterMap.h>
 
 #include <mrpt/bayes/CParticleFilter.h>
@@ -67,6 +68,8 @@ struct TLocalizerParams : public mrpt::config::CLoadableOptions {
     mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
         mrpt::bayes::CParticleFilter::prSystematic;  //!< resampling
     bool decodeRaw = true;  //!< decode_raw: FFT-decode raw windows without codes
+    /** Gate, emitter health, lost-track detection ([localization] keys). */
+    TRobustParams robust;
     // [motion]
     TMotionNoise motion;
 
@@ -86,6 +89,12 @@ struct TLocalizerStep {
     size_t unknownIds = 0;      //!< codes forming an ID absent from the map
     size_t decoded = 0;         //!< raw windows decoded here
     size_t resetParticles = 0;  //!< particles redrawn by sensor resetting
+    size_t gated = 0;           //!< readings inconsistent with the motion prior
+    bool lost = false;          //!< the track was declared lost (and redrawn)
+    std::string lostId;         //!< the unique ID it was redrawn from
+    /** The particles became confident again (spread under gate_max_std)
+     * after a lost-track reset. */
+    bool settled = false;
 };
 
 class CIRLocalizer {
@@ -95,9 +104,13 @@ class CIRLocalizer {
                  const TLocalizerParams& p, uint64_t seed);
 
     /** One instant: the odometry increment since the previous one (nullopt:
-     * not moved) and the IR observation (may be null). */
+     * not moved) and the IR observation (may be null). `t` (s, optional): the
+     * instant's time; with it, an IR instant without an observation (no
+     * receiver saw anything: a text log cannot say so otherwise) counts as
+     * silence of the emitters the estimate puts a receiver under. */
     TLocalizerStep step(const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
-                        const rfir::obs::CObservationIRSignals* ir);
+                        const rfir::obs::CObservationIRSignals* ir,
+                        std::optional<double> t = std::nullopt);
 
     bool started() const { return m_started; }
     /** The estimate used for the Estimate association, nullopt while the
@@ -111,10 +124,26 @@ class CIRLocalizer {
                           const rfir::ir::TEmitter& e) const;
     const mrpt::slam::CMonteCarloLocalization2D& particles() const { return m_pdf; }
     const TLocalizerParams& params() const { return m_params; }
+    /** Per emitter (index as the map's emitters()): readings, gated, checks. */
+    const std::vector<TEmitterHealth>& emitterHealth() const {
+        return m_monitor.health();
+    }
+    /** Largest standard deviation of the particles' position (m). */
+    double positionStd() const;
 
   private:
+    /** Receiver and emitter ID (empty: nothing) of every decoded reading. */
+    using TSeen = std::vector<std::pair<rfir::obs::TIRReceiver, std::string>>;
     rfir::obs::CObservationIRSignals::Ptr prepare(
-        const rfir::obs::CObservationIRSignals& in, TLocalizerStep& info) const;
+        const rfir::obs::CObservationIRSignals& in, TLocalizerStep& info,
+        TSeen& seen) const;
+    /** Drops the readings inconsistent with the predicted particles (while
+     * they are confident), feeds the emitter health; returns the index of a
+     * reading that declares the track lost, if any. */
+    std::optional<size_t> gate(rfir::obs::CObservationIRSignals& obs,
+                               TLocalizerStep& info);
+    /** Expected answers: emitters the estimate puts a receiver under. */
+    void checkEmitters(const TSeen& seen);
     void predict(const mrpt::poses::CPose2D& incr);
     /** Redraws particles from the first unique reading of `obs`: all of them
      * (`all`), or reset_ratio of those out of view when fewer than
@@ -132,7 +161,16 @@ class CIRLocalizer {
     mrpt::slam::CMonteCarloLocalization2D m_pdf;
     mrpt::bayes::CParticleFilter m_pf;
     rfir::models::TRandom m_rng;
+    CTrackMonitor m_monitor;
     bool m_started = false;
+    bool m_recovering = false;  //!< after a lost-track reset, until settled
+    /** The receivers (from the fullest observation) and the IR cadence, for
+     * the instants without an IR observation. */
+    std::vector<rfir::obs::TIRReceiver> m_receivers;
+    std::optional<double> m_lastIrT, m_lastCheckT;
+    double m_irPeriod = 0;
+    void noteSilence(const rfir::obs::CObservationIRSignals* ir, std::optional<double> t,
+                     TSeen& seen);
 };
 
 }  // namespace rfir::ir

@@ -18,6 +18,13 @@ namespace rfir::ir {
 /** Eq. 5.2 in log form with alpha = 1: -(V - Vbar)^2 / (2 sigma^2). */
 double voltageLogLikelihood(double v, double vExpected, double sigma);
 
+/** Eq. 5.2 mixed with a uniform outlier component of weight w over
+ * [0, range] V, in the same units as voltageLogLikelihood (0 at V = Vbar when
+ * w = 0): log((1 - w) exp(-e^2 / 2 sigma^2) + w sqrt(2 pi) sigma / range).
+ * w = 0 returns voltageLogLikelihood exactly. */
+double voltageMixtureLogLikelihood(double v, double vExpected, double sigma, double w,
+                                   double range);
+
 /** Eq. 5.1: belief that the emitter at `emitter` is the one seen by a receiver
  * at `receiver` (exp(-|x_p - x_r|^2 / (2 sigma^2)), sigma = 30 mm in the seed). */
 double emitterBelief(const mrpt::math::TPoint2D& emitter,
@@ -61,6 +68,12 @@ struct TIRLikelihoodParams {
      * the seed; 0 disables it). */
     double areaMargin = 0.5;
     double outOfAreaLogLik = 0.0;
+    /** Voltage outliers (not in the seed): eq. 5.2 becomes the mixture
+     * (1 - w) N(V; Vbar, sigma) + w U(0, voltOutlierRange), so that one wild
+     * voltage (a reflection, a glitch) bounds the loss of a good pose;
+     * 0 keeps eq. 5.2 exactly. */
+    double voltOutlierWeight = 0.0;
+    double voltOutlierRange = 4.0;  //!< V: width of the uniform component
 };
 
 /** Log-likelihood of one reading (voltage v) from an emitter at `emitter`, for

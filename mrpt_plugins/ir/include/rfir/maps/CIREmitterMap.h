@@ -34,7 +34,10 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
 
     CIREmitterMap() = default;
 
-    void setEmitters(const rfir::ir::TEmitterSet& e) { m_emitters = e; }
+    void setEmitters(const rfir::ir::TEmitterSet& e) {
+        m_emitters = e;
+        m_weights.clear();
+    }
     /** TEmitterSet::load (throws "FILE:LINE: ..."). */
     void loadEmitterFile(const std::string& path);
     const rfir::ir::TEmitterSet& emitters() const { return m_emitters; }
@@ -46,6 +49,12 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
     const std::optional<mrpt::math::TPose2D>& associationReference() const {
         return m_reference;
     }
+
+    /** Per-emitter factors on the readings' log-likelihood (index as
+     * emitters(); empty: all 1). Set by the localizer from its emitter health
+     * (down-weights emitters whose readings contradict the map); run state,
+     * not serialized. */
+    void setEmitterWeights(std::vector<double> w) { m_weights = std::move(w); }
 
     /** The emitter (index into emitters()) a reading is attributed to for a
      * robot pose; nullopt if the reading is skipped (no code, an ID absent from
@@ -103,6 +112,7 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
   private:
     rfir::ir::TEmitterSet m_emitters;
     std::optional<mrpt::math::TPose2D> m_reference;
+    std::vector<double> m_weights;
 };
 
 /** Registers the library's classes with MRPT (also done at load time; calling

@@ -18,6 +18,17 @@ struct TRunResult {
     size_t steps = 0, irObservations = 0, readings = 0, used = 0, unknownIds = 0,
            decoded = 0, resetEvents = 0, resetParticles = 0;
     std::optional<double> firstUniqueTime;
+    size_t gated = 0;  //!< readings inconsistent with the motion prior (not used)
+    /** A lost track: when declared (and redrawn from unique ID `id`), and
+     * when the particles were confident again (nullopt: not by the end). */
+    struct TLost {
+        double t = 0;
+        std::string id;
+        std::optional<double> settled;
+    };
+    std::vector<TLost> lost;
+    /** Per emitter of the map, at the end of the run (empty: odometry only). */
+    std::vector<rfir::ir::TEmitterHealth> emitterHealth;
     double seconds = 0;  //!< wall-clock time of the filter
 };
 

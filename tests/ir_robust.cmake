@@ -1,0 +1,5 @@
+# IR localization that is not lost (issue 12 item 6): the simulator's IR
+# fault INIs and the raw-window rotation run, localized with the stock INI.
+rfir_add_test(test_ir_robust
+  SOURCES test_ir_robust.cpp
+  LIBS rfir_ir rfir_sim rfir_eval rfir_localize_core)

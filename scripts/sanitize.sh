@@ -16,7 +16,10 @@ JOBS=${RFIR_JOBS:-$(nproc)}
 # below still stops on any alignment report it does not suppress.
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize-recover=alignment -fno-omit-frame-pointer"
 t0=$SECONDS
+# SlamAccuracy.Rfid300mmOrdering (12 seeds, 3 methods) took over 300 s under
+# ASan on the 2-core machine: the per-test limit is raised here only.
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRFIR_FUZZ=OFF \
+  -DRFIR_TEST_TIMEOUT=1800 \
   -DCMAKE_CXX_FLAGS="$SAN" -DCMAKE_EXE_LINKER_FLAGS="$SAN" \
   -DCMAKE_SHARED_LINKER_FLAGS="$SAN" >/dev/null
 cmake --build "$BUILD" -j"$JOBS"

@@ -5,6 +5,7 @@
 #include <mrpt/core/bits_math.h>
 
 #include <algorithm>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 
@@ -167,9 +168,10 @@ void CRFIDTagParticleMap::TMapDefinition::dumpToTextStream_map_specific(
 mrpt::maps::CMetricMap* CRFIDTagParticleMap::internal_CreateFromMapDefinition(
     const mrpt::maps::TMetricMapInitializer& d) {
     const auto& def = dynamic_cast<const CRFIDTagParticleMap::TMapDefinition&>(d);
-    auto* m = new CRFIDTagParticleMap();
+    // Owned until returned: a prior file that is refused must not leak the map.
+    auto m = std::make_unique<CRFIDTagParticleMap>();
     m->insertionOptions = def.insertionOpts;
     m->likelihoodOptions = def.likelihoodOpts;
     if (!def.priorMapFile.empty()) m->loadPriorFromTextFile(def.priorMapFile);
-    return m;
+    return m.release();
 }

@@ -3,13 +3,13 @@
  * emitters (one LED, one code, many places). */
 #pragma once
 
+#include <rfir/models/spatial_grid.h>
 #include <rfir/obs/ir_lattice.h>
 
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace rfir::ir {
@@ -51,7 +51,7 @@ class TEmitterSet {
     void buildGrid();
     std::vector<TEmitter> m_emitters;
     std::map<std::string, std::vector<size_t>> m_byId;
-    std::unordered_map<int64_t, std::vector<size_t>> m_grid;
+    rfir::models::TSpatialGrid<size_t> m_grid{kGridCell};
     double m_x0 = 0, m_y0 = 0, m_x1 = 0, m_y1 = 0;  //!< cached bounds
 };
 

@@ -40,10 +40,16 @@ TEmitterSet::TEmitterSet(std::vector<TEmitter> emitters)
 }
 
 TEmitterSet TEmitterSet::load(const std::string& path) {
-    const auto file = rfir::common::loadMapFile(path);
+    return fromMapEntries(rfir::common::loadMapFile(path), path);
+}
+
+TEmitterSet TEmitterSet::fromMapEntries(const rfir::common::TMapFile& records,
+                                        const std::string& path,
+                                        const std::vector<std::string>& absent) {
     std::vector<TEmitter> em;
-    for (const auto& r : file) {
+    for (const auto& r : records) {
         if (r.kind != rfir::common::TMapEntry::Kind::Emitter) continue;
+        if (std::find(absent.begin(), absent.end(), r.id) != absent.end()) continue;
         TEmitter e;
         e.id = r.id;
         e.x = r.x;

@@ -187,3 +187,17 @@ TEST(Cli, IniEditsAreRoutedBySection) {
     EXPECT_NE(message("slam_particles=5").find("expected section.key=value"),
               std::string::npos);
 }
+
+TEST(Cli, StockSlamIniAndRawlogStem) {
+    using rfir::common::rawlogStem;
+    using rfir::common::slamIniPath;
+    EXPECT_EQ(slamIniPath("d", "ps"), "d/slam_ps.ini");
+    EXPECT_EQ(slamIniPath("d", "fastslam"), "d/slam_fastslam.ini");
+    EXPECT_EQ(slamIniPath("d", "pf"), "d/slam_pf.ini");
+    EXPECT_EQ(slamIniPath("d", "rb"), "d/slam_pf.ini");  // no INI of its own
+    EXPECT_EQ(slamIniPath("ps"), rfir::common::stockConfigDir() + "/slam_ps.ini");
+    EXPECT_EQ(rawlogStem("a/run.rawlog"), "a/run");
+    EXPECT_EQ(rawlogStem("a/run.rawlog.gz"), "a/run");
+    EXPECT_EQ(rawlogStem("a/run.txt"), "a/run.txt");
+    EXPECT_EQ(rawlogStem(".rawlog"), ".rawlog");  // no stem: left as it is
+}

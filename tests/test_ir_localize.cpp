@@ -34,19 +34,8 @@ struct TRun {
 
 std::shared_ptr<maps::CIREmitterMap> mapOf(const sim::TSimOutput& out,
                                            const std::vector<std::string>& absent) {
-    std::vector<ir::TEmitter> em;
-    for (const auto& e : out.gtMap)
-        if (e.kind == common::TMapEntry::Kind::Emitter &&
-            std::find(absent.begin(), absent.end(), e.id) == absent.end()) {
-            ir::TEmitter t;
-            t.id = e.id;
-            t.x = e.x;
-            t.y = e.y;
-            t.z = e.z;
-            em.push_back(t);
-        }
     auto m = std::make_shared<maps::CIREmitterMap>();
-    m->setEmitters(ir::TEmitterSet(em));
+    m->setEmitters(ir::TEmitterSet::fromMapEntries(out.gtMap, "ground truth", absent));
     return m;
 }
 

@@ -33,18 +33,8 @@ localize::TConfig stockConfig(const sim::TSimOutput& out) {
     localize::TConfig cfg;
     cfg.iniPath = kIni + "ir_localize.ini";
     localize::loadConfig(cfg, "", false);
-    std::vector<ir::TEmitter> em;
     const auto& src = out.localizerMap.empty() ? out.gtMap : out.localizerMap;
-    for (const auto& e : src)
-        if (e.kind == common::TMapEntry::Kind::Emitter) {
-            ir::TEmitter t;
-            t.id = e.id;
-            t.x = e.x;
-            t.y = e.y;
-            t.z = e.z;
-            em.push_back(t);
-        }
-    cfg.map->setEmitters(ir::TEmitterSet(em));
+    cfg.map->setEmitters(ir::TEmitterSet::fromMapEntries(src, "simulated map"));
     return cfg;
 }
 

@@ -1,10 +1,12 @@
 /* Tests of the run's generator (rfir/models/random.h) and of the odometry
- * noise model (rfir/models/odometry_noise.h). */
+ * noise model (rfir/models/odometry_noise.h) and of the spatial grid. */
 #include <rfir/models/odometry_noise.h>
 #include <rfir/models/random.h>
+#include <rfir/models/spatial_grid.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -95,4 +97,42 @@ TEST(OdometryNoise, PropagateComposesAndWraps) {
     phi = 3.0;
     g.propagate(r, x, y, phi);
     EXPECT_NEAR(phi, 3.5 - 2 * M_PI, 1e-12);
+}
+
+// The one spatial grid: a square query returns every value within r, a 3 x 3
+// query every value within one cell side, in the same order each time.
+TEST(SpatialGrid, QueriesCoverTheirRadiusInAFixedOrder) {
+    rfir::models::TSpatialGrid<size_t> g(0.5);
+    std::vector<std::pair<double, double>> pts;
+    TRandom rng(3);
+    for (size_t i = 0; i < 400; i++) {
+        pts.emplace_back(rng.drawUniform(-3.0, 3.0), rng.drawUniform(-3.0, 3.0));
+        g.insert(pts.back().first, pts.back().second, i);
+    }
+    for (int q = 0; q < 50; q++) {
+        const double x = rng.drawUniform(-3.0, 3.0), y = rng.drawUniform(-3.0, 3.0);
+        std::vector<size_t> sq, sq2, around;
+        g.forEachInSquare(x, y, 0.8, [&](size_t i) { sq.push_back(i); });
+        g.forEachInSquare(x, y, 0.8, [&](size_t i) { sq2.push_back(i); });
+        g.forEachAround(x, y, [&](size_t i) { around.push_back(i); });
+        EXPECT_EQ(sq, sq2);
+        for (size_t i = 0; i < pts.size(); i++) {
+            const double d = std::hypot(pts[i].first - x, pts[i].second - y);
+            const auto has = [i](const std::vector<size_t>& v) {
+                return std::find(v.begin(), v.end(), i) != v.end();
+            };
+            if (d <= 0.8) EXPECT_TRUE(has(sq)) << i;
+            if (d <= 0.5) EXPECT_TRUE(has(around)) << i;
+        }
+    }
+    // Within a cell, the insertion order.
+    rfir::models::TSpatialGrid<int> c(1.0);
+    for (int v : {5, 2, 9}) c.insert(0.5, 0.5, v);
+    std::vector<int> got;
+    c.forEachAround(0.5, 0.5, [&](int v) { got.push_back(v); });
+    EXPECT_EQ(got, (std::vector<int>{5, 2, 9}));
+    // A query far beyond any cell key does not overflow.
+    got.clear();
+    c.forEachAround(1e300, -1e300, [&](int v) { got.push_back(v); });
+    EXPECT_TRUE(got.empty());
 }

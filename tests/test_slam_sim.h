@@ -2,6 +2,7 @@
 // methods run with their stock INIs, errors from rfir_eval.
 #pragma once
 
+#include <rfir/common/install_paths.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_engine.h>
@@ -26,11 +27,9 @@ inline std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput&
 inline rfir::slam::TSlamConfig stockConfig(
     const std::string& method,
     const std::vector<std::pair<std::string, std::string>>& edits = {}) {
-    const std::string file = method == "fastslam" ? "fastslam"
-                             : method == "ps"     ? "ps"
-                                                  : "pf";
     // A memory copy: CConfigFile would write the edits back into the stock INI.
-    std::ifstream in(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + file + ".ini");
+    std::ifstream in(
+        rfir::common::slamIniPath(std::string(RFIR_SOURCE_DIR) + "/config_ini", method));
     std::stringstream text;
     text << in.rdbuf();
     mrpt::config::CConfigFileMemory f(text.str());

@@ -1,5 +1,6 @@
 /* rfir-localize: Monte Carlo localization of a robot under the ceiling IR
  * emitters of thesis chapter 5, from an unknown start. See docs/ir.md. */
+#include <rfir/common/install_paths.h>
 #include <rfir/localize/localize_config.h>
 #include <rfir/localize/localize_output.h>
 #include <rfir/localize/localize_run.h>
@@ -42,7 +43,7 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
     if (!fs::is_directory(cfg.outDir))
         throw std::runtime_error(cfg.outDir + ": cannot create the output directory");
     std::optional<mrpt::poses::CPose2D> gtStart;
-    const std::string gt = rfir::localize::rawlogStem(cfg.rawlogPath) + ".gt.tum";
+    const std::string gt = rfir::common::rawlogStem(cfg.rawlogPath) + ".gt.tum";
     if (fs::exists(gt)) {
         const auto p = rfir::common::loadTUM(gt);
         if (!p.empty()) gtStart = p.front().pose;

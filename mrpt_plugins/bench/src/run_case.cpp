@@ -1,6 +1,7 @@
 /* rfir-bench: one method at one (M, N): build the state, time the updates. */
 #include <rfir/bench/bench.h>
 #include <rfir/bench/synthetic_drive.h>
+#include <rfir/common/install_paths.h>
 
 #include <rfir/common/ini_override.h>
 #include <rfir/slam/slam_config.h>
@@ -33,7 +34,7 @@ rfir::slam::TSlamConfig loadSlamConfigOf(const std::string& path,
 
 rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& method,
                                     size_t M) {
-    const std::string path = o.configDir + "/slam_" + method + ".ini";
+    const std::string path = rfir::common::slamIniPath(o.configDir, method);
     if (!mrpt::system::fileExists(path))
         throw std::runtime_error("cannot read the stock INI '" + path + "'");
     // Edit a memory copy: a CConfigFile writes its edits back into the stock INI.

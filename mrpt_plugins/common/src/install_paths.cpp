@@ -15,4 +15,23 @@ std::string stockConfigDir() {
     const auto dir = std::filesystem::path(buf).parent_path();
     return (dir / ".." / "share" / "rfir" / "config_ini").lexically_normal().string();
 }
+
+std::string slamIniPath(const std::string& dir, const std::string& method) {
+    const std::string m = method == "fastslam" ? "fastslam"
+                          : method == "ps"     ? "ps"
+                                               : "pf";
+    return dir + "/slam_" + m + ".ini";
+}
+
+std::string slamIniPath(const std::string& method) {
+    return slamIniPath(stockConfigDir(), method);
+}
+
+std::string rawlogStem(const std::string& p) {
+    for (const std::string ext : {".rawlog.gz", ".rawlog"})
+        if (p.size() > ext.size() &&
+            p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
+            return p.substr(0, p.size() - ext.size());
+    return p;
+}
 }  // namespace rfir::common

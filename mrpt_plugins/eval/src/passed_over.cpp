@@ -2,12 +2,12 @@
  * true path: the denominator of "mapped vs passed over". */
 #include <rfir/eval/metrics.h>
 #include <rfir/models/read_model.h>
+#include <rfir/models/spatial_grid.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace rfir::eval {
 using mrpt::poses::CPose2D;
@@ -35,38 +35,14 @@ void forEachSample(const TPath2D& path, double step, double reach, double maxGap
     }
 }
 
-/** Uniform grid of landmark indices; cells of side >= the query radius, so a
+/** The entries on a grid of cells of side >= the query radius, so that a
  * query looks at the 3x3 cells around a point. */
-class CGrid {
-  public:
-    CGrid(const std::vector<const TMapEntry*>& pts, double cell)
-        : pts_(pts), cell_(cell) {
-        for (size_t i = 0; i < pts.size(); i++)
-            cells_[key(cellOf(pts[i]->x), cellOf(pts[i]->y))].push_back(i);
-    }
-    template <class F>
-    void near(double x, double y, F&& f) const {
-        const long cx = cellOf(x), cy = cellOf(y);
-        for (long i = cx - 1; i <= cx + 1; i++)
-            for (long j = cy - 1; j <= cy + 1; j++) {
-                const auto it = cells_.find(key(i, j));
-                if (it == cells_.end()) continue;
-                for (size_t k : it->second) f(*pts_[k]);
-            }
-    }
-
-  private:
-    long cellOf(double v) const { return long(std::floor(v / cell_)); }
-    static long long key(long i, long j) {
-        // Shifted as unsigned: a left shift of a negative value is undefined.
-        return static_cast<long long>(
-            (static_cast<unsigned long long>(i) << 32) ^
-            (static_cast<unsigned long long>(j) & 0xffffffffULL));
-    }
-    std::vector<const TMapEntry*> pts_;
-    double cell_;
-    std::unordered_map<long long, std::vector<size_t>> cells_;
-};
+using TEntryGrid = rfir::models::TSpatialGrid<const TMapEntry*>;
+TEntryGrid gridOf(const std::vector<const TMapEntry*>& pts, double cell) {
+    TEntryGrid g(cell);
+    for (const TMapEntry* p : pts) g.insert(p->x, p->y, p);
+    return g;
+}
 
 std::vector<const TMapEntry*> ofKind(const rfir::common::TMapFile& m, TMapEntry::Kind k) {
     std::vector<const TMapEntry*> out;
@@ -89,11 +65,12 @@ std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt,
         minHalf = std::min({minHalf, r.halfX, r.halfY});
     }
     std::set<std::string> seen;
-    const CGrid grid(ofKind(gt, TMapEntry::Kind::Tag), reach);
+    const TEntryGrid grid = gridOf(ofKind(gt, TMapEntry::Kind::Tag), reach);
     forEachSample(gtPath, 0.25 * minHalf, reach, maxGap, [&](const CPose2D& p) {
         const mrpt::math::TPose2D pose = p.asTPose();
         const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-        grid.near(p.x(), p.y(), [&](const TMapEntry& tag) {
+        grid.forEachAround(p.x(), p.y(), [&](const TMapEntry* t) {
+            const TMapEntry& tag = *t;
             if (seen.count(tag.id)) return;
             // The SLAM read model (SPEC section 2: e = tag - reader centre).
             for (const auto& r : readers) {
@@ -117,10 +94,11 @@ std::set<std::string> landmarksInView(const rfir::common::TMapFile& gt,
     const double reach = std::hypot(sensor.x, sensor.y) + sensor.maxRange;
     const CPose2D onRobot(sensor.x, sensor.y, sensor.yaw);
     std::set<std::string> seen;
-    const CGrid grid(ofKind(gt, TMapEntry::Kind::Landmark), reach);
+    const TEntryGrid grid = gridOf(ofKind(gt, TMapEntry::Kind::Landmark), reach);
     forEachSample(gtPath, 0.125 * sensor.maxRange, reach, maxGap, [&](const CPose2D& p) {
         const CPose2D sp = p + onRobot;
-        grid.near(sp.x(), sp.y(), [&](const TMapEntry& lm) {
+        grid.forEachAround(sp.x(), sp.y(), [&](const TMapEntry* l) {
+            const TMapEntry& lm = *l;
             if (seen.count(lm.id)) return;
             const double dx = lm.x - sp.x(), dy = lm.y - sp.y();
             if (std::hypot(dx, dy) > sensor.maxRange) return;

@@ -1,4 +1,5 @@
 /* rfir-experiments: simulate, run a method, score it. */
+#include <rfir/common/install_paths.h>
 #include <rfir/experiments/runner.h>
 
 #include <rfir/common/ini_override.h>
@@ -25,10 +26,7 @@ std::string readText(const std::string& path) {
 
 rfir::slam::TSlamConfig slamConfig(const TSetup& s, const TMethodSpec& m,
                                    const TPoint& p) {
-    const std::string file = m.method == "fastslam" ? "fastslam"
-                             : m.method == "ps"     ? "ps"
-                                                    : "pf";
-    const std::string path = s.configDir + "/slam_" + file + ".ini";
+    const std::string path = rfir::common::slamIniPath(s.configDir, m.method);
     mrpt::config::CConfigFileMemory ini(readText(path));
     // Edits go into an in-memory copy of the INI (never the file).
     rfir::common::applyIniOverrides(ini, p.slamEdits);

@@ -9,17 +9,6 @@
 
 namespace rfir::ir {
 namespace {
-int64_t cellKey(int64_t ix, int64_t iy) {
-    // Shifted as unsigned: a left shift of a negative value is undefined.
-    return int64_t((uint64_t(ix) << 32) ^ (uint64_t(iy) & 0xffffffffULL));
-}
-int64_t cellOf(double v) {
-    // Saturated: converting a double beyond int64's range is undefined (a
-    // far-off query pose must not be); keys use 32 bits per axis anyway.
-    const double c = std::floor(v / TEmitterSet::kGridCell);
-    return int64_t(std::clamp(c, -2147483648.0, 2147483647.0));
-}
-
 /** Largest |coordinate| of an emitter (m): beyond any building. */
 constexpr double kMaxEmitterCoordinate = 1e6;
 
@@ -51,10 +40,16 @@ TEmitterSet::TEmitterSet(std::vector<TEmitter> emitters)
 }
 
 TEmitterSet TEmitterSet::load(const std::string& path) {
-    const auto file = rfir::common::loadMapFile(path);
+    return fromMapEntries(rfir::common::loadMapFile(path), path);
+}
+
+TEmitterSet TEmitterSet::fromMapEntries(const rfir::common::TMapFile& records,
+                                        const std::string& path,
+                                        const std::vector<std::string>& absent) {
     std::vector<TEmitter> em;
-    for (const auto& r : file) {
+    for (const auto& r : records) {
         if (r.kind != rfir::common::TMapEntry::Kind::Emitter) continue;
+        if (std::find(absent.begin(), absent.end(), r.id) != absent.end()) continue;
         TEmitter e;
         e.id = r.id;
         e.x = r.x;
@@ -104,7 +99,7 @@ void TEmitterSet::bounds(double& x0, double& y0, double& x1, double& y1) const {
 
 namespace rfir::ir {
 void TEmitterSet::buildGrid() {
-    m_grid.clear();
+    m_grid.reset(kGridCell);
     for (size_t i = 0; i < m_emitters.size(); i++) {
         const auto& e = m_emitters[i];
         if (i == 0 || e.x < m_x0) m_x0 = e.x;
@@ -113,27 +108,22 @@ void TEmitterSet::buildGrid() {
         if (i == 0 || e.y > m_y1) m_y1 = e.y;
     }
     for (size_t i = 0; i < m_emitters.size(); i++)
-        m_grid[cellKey(cellOf(m_emitters[i].x), cellOf(m_emitters[i].y))].push_back(i);
+        m_grid.insert(m_emitters[i].x, m_emitters[i].y, i);
 }
 
 std::optional<size_t> TEmitterSet::nearestIndexWithin(double x, double y,
                                                       double radius) const {
-    const int64_t cx = cellOf(x), cy = cellOf(y);
     double best = radius * radius;
     std::optional<size_t> found;
-    for (int64_t ix = cx - 1; ix <= cx + 1; ix++)
-        for (int64_t iy = cy - 1; iy <= cy + 1; iy++) {
-            const auto it = m_grid.find(cellKey(ix, iy));
-            if (it == m_grid.end()) continue;
-            for (size_t i : it->second) {
-                const double dx = m_emitters[i].x - x, dy = m_emitters[i].y - y;
-                const double d2 = dx * dx + dy * dy;
-                if (d2 <= best) {
-                    best = d2;
-                    found = i;
-                }
-            }
+    // Ties go to the last one visited (the grid's fixed order).
+    m_grid.forEachAround(x, y, [&](size_t i) {
+        const double dx = m_emitters[i].x - x, dy = m_emitters[i].y - y;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 <= best) {
+            best = d2;
+            found = i;
         }
+    });
     return found;
 }
 

@@ -1,4 +1,5 @@
 /* rfir-localize: the output files. */
+#include <rfir/common/install_paths.h>
 #include <rfir/localize/localize_output.h>
 
 #include <rfir/common/atomic_file.h>
@@ -15,13 +16,6 @@
 namespace rfir::localize {
 namespace fs = std::filesystem;
 using rfir::common::TPath2D;
-
-std::string rawlogStem(const std::string& p) {
-    const std::string ext = ".rawlog";
-    if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
-        return p.substr(0, p.size() - ext.size());
-    return p;
-}
 
 /** The path's pose at each spot time (the latest pose not after it). */
 TPath2D atSpots(const TPath2D& path, const TPath2D& spots) {
@@ -43,7 +37,7 @@ struct TEvals {
 
 TEvals evaluate(const TConfig& cfg, const TRunResult& res) {
     TEvals ev;
-    const std::string stem = rawlogStem(cfg.rawlogPath);
+    const std::string stem = rfir::common::rawlogStem(cfg.rawlogPath);
     if (!fs::exists(stem + ".gt.tum")) return ev;
     ev.gt = rfir::common::loadTUM(stem + ".gt.tum");
     const std::string label = cfg.odometryOnly ? "odometry only" : "IR MCL";

@@ -18,11 +18,6 @@ uint32_t streamSeed(uint64_t seed, uint64_t stream) {
 }
 
 namespace {
-int64_t bucketKey(int64_t i, int64_t j) {
-    // Shifted as unsigned: a left shift of a negative value is undefined.
-    return int64_t((uint64_t(i) << 32) ^ (uint64_t(j) & 0xffffffffULL));
-}
-
 /** Grid coordinates of n = floor(len / pitch) points centred in [lo, lo + len]. */
 std::vector<double> gridLine(double lo, double len, double pitch) {
     const int n = std::max(1, int(std::floor(len / pitch + 1e-9)));
@@ -104,26 +99,13 @@ void buildLandmarks(const TSimConfig& cfg, uint64_t seed, TWorld& w) {
 }  // namespace
 
 void TWorld::indexTags(double cell) {
-    cell_ = cell;
-    buckets_.clear();
-    for (size_t k = 0; k < tags.size(); k++)
-        buckets_[bucketKey(int64_t(std::floor(tags[k].x / cell)),
-                           int64_t(std::floor(tags[k].y / cell)))]
-            .push_back(k);
+    grid_.reset(cell);
+    for (size_t k = 0; k < tags.size(); k++) grid_.insert(tags[k].x, tags[k].y, k);
 }
 
 void TWorld::tagsNear(double x, double y, double r, std::vector<size_t>& out) const {
     out.clear();
-    const int64_t i0 = int64_t(std::floor((x - r) / cell_)),
-                  i1 = int64_t(std::floor((x + r) / cell_));
-    const int64_t j0 = int64_t(std::floor((y - r) / cell_)),
-                  j1 = int64_t(std::floor((y + r) / cell_));
-    for (int64_t j = j0; j <= j1; j++)
-        for (int64_t i = i0; i <= i1; i++) {
-            auto it = buckets_.find(bucketKey(i, j));
-            if (it != buckets_.end())
-                out.insert(out.end(), it->second.begin(), it->second.end());
-        }
+    grid_.forEachInSquare(x, y, r, [&](size_t k) { out.push_back(k); });
 }
 
 TWorld buildWorld(const TSimConfig& cfg, uint64_t seed) {

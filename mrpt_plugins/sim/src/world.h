@@ -2,6 +2,7 @@
  * the sensor models that read it. */
 #pragma once
 
+#include <rfir/models/spatial_grid.h>
 #include <rfir/obs/CObservationIRSignals.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
 #include <rfir/obs/ir_lattice.h>
@@ -13,7 +14,6 @@
 #include "sim_random.h"
 
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace rfir::sim::detail {
@@ -34,8 +34,7 @@ struct TWorld {
     void tagsNear(double x, double y, double radius, std::vector<size_t>& out) const;
 
   private:
-    double cell_ = 0.5;
-    std::unordered_map<int64_t, std::vector<size_t>> buckets_;
+    rfir::models::TSpatialGrid<size_t> grid_{0.5};
 };
 
 /** Builds the tag carpet, the emitter lattice and the landmarks of `cfg`,

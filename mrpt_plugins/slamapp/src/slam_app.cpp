@@ -58,13 +58,6 @@ rfir::slam::TSlamConfig loadConfig(const std::string& ini, const TAppArgs& a) {
     }
 }
 
-std::string withoutRawlogExt(const std::string& p) {
-    const std::string ext = ".rawlog";
-    if (p.size() > ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
-        return p.substr(0, p.size() - ext.size());
-    return p;
-}
-
 struct TLoaded {
     rfir::obs::CObservationLogHeader header;
     bool hasHeader = true;
@@ -220,7 +213,7 @@ void writeSettingsAndStats(rfir::common::COutputFolder& out,
 
 /** Ground truth beside the rawlog unless given. */
 void findGroundTruth(TAppArgs& a) {
-    const std::string base = withoutRawlogExt(a.rawlog);
+    const std::string base = rfir::common::rawlogStem(a.rawlog);
     if (!a.gtPath && mrpt::system::fileExists(base + ".gt.tum"))
         a.gtPath = base + ".gt.tum";
     if (!a.gtMap && mrpt::system::fileExists(base + ".gt_map.txt"))
@@ -328,18 +321,11 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
 }
 }  // namespace
 
-std::string stockConfigPath(const std::string& method) {
-    const std::string m = method == "fastslam" ? "fastslam"
-                          : method == "ps"     ? "ps"
-                                               : "pf";
-    return rfir::common::stockConfigDir() + "/slam_" + m + ".ini";
-}
-
 int runSlamApp(const TAppArgs& args) {
     TAppArgs a = args;
     if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
     const std::string ini =
-        a.config ? *a.config : stockConfigPath(a.method.value_or("pf"));
+        a.config ? *a.config : rfir::common::slamIniPath(a.method.value_or("pf"));
     rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
     cfg.seed = a.seed;
     findGroundTruth(a);

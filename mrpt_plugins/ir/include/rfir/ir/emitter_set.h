@@ -3,13 +3,14 @@
  * emitters (one LED, one code, many places). */
 #pragma once
 
+#include <rfir/common/map_io.h>
+#include <rfir/models/spatial_grid.h>
 #include <rfir/obs/ir_lattice.h>
 
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace rfir::ir {
@@ -25,6 +26,11 @@ class TEmitterSet {
      * std::runtime_error("FILE:LINE: ...") on a malformed line or a bad ID, and
      * "FILE: no emitter" when there is none. */
     static TEmitterSet load(const std::string& path);
+    /** The same from records already read (`source` names their file in the
+     * messages), leaving out the emitters whose ID is in `absent`. */
+    static TEmitterSet fromMapEntries(const rfir::common::TMapFile& records,
+                                      const std::string& source,
+                                      const std::vector<std::string>& absent = {});
 
     const std::vector<TEmitter>& emitters() const { return m_emitters; }
     bool empty() const { return m_emitters.empty(); }
@@ -51,7 +57,7 @@ class TEmitterSet {
     void buildGrid();
     std::vector<TEmitter> m_emitters;
     std::map<std::string, std::vector<size_t>> m_byId;
-    std::unordered_map<int64_t, std::vector<size_t>> m_grid;
+    rfir::models::TSpatialGrid<size_t> m_grid{kGridCell};
     double m_x0 = 0, m_y0 = 0, m_x1 = 0, m_y1 = 0;  //!< cached bounds
 };
 

@@ -18,7 +18,4 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
 rfir::common::TPath2D atSpots(const rfir::common::TPath2D& path,
                               const rfir::common::TPath2D& spots);
 
-/** `<stem>` of a rawlog path: the path without its ".rawlog" extension. */
-std::string rawlogStem(const std::string& rawlogPath);
-
 }  // namespace rfir::localize

@@ -23,10 +23,6 @@ struct TAppArgs {
     bool quiet = false;
 };
 
-/** The stock INI of a method: <exe_dir>/../share/rfir/config_ini/slam_<m>.ini
- * (fastslam for fastslam, ps for ps, pf otherwise). */
-std::string stockConfigPath(const std::string& method);
-
 /** Runs SLAM and writes every output; returns the process exit code.
  * Throws std::exception with a message for the user on bad input. */
 int runSlamApp(const TAppArgs& a);

@@ -6,6 +6,7 @@
  * particles from a unique-ID reading when too few particles agree with it. */
 #pragma once
 
+#include <rfir/ir/ir_particles.h>
 #include <rfir/ir/track_monitor.h>
 #include <rfir/maps/CIREmitterMap.h>
 
@@ -139,7 +140,8 @@ class CIRLocalizer {
         TSeen& seen) const;
     /** Drops the readings inconsistent with the predicted particles (while
      * they are confident), feeds the emitter health; returns the index of a
-     * reading that declares the track lost, if any. */
+     * reading that declares the track lost, if any. The terms it evaluates
+     * for the kept readings go to m_step, for the weighing. */
     std::optional<size_t> gate(rfir::obs::CObservationIRSignals& obs,
                                TLocalizerStep& info);
     /** Expected answers: emitters the estimate puts a receiver under. */
@@ -158,7 +160,9 @@ class CIRLocalizer {
 
     std::shared_ptr<rfir::maps::CIREmitterMap> m_map;
     TLocalizerParams m_params;
-    mrpt::slam::CMonteCarloLocalization2D m_pdf;
+    /** The step's likelihood, refilled every step (before m_pdf: it weighs). */
+    TIRStepLikelihood m_step;
+    CIRParticles m_pdf;
     mrpt::bayes::CParticleFilter m_pf;
     rfir::models::TRandom m_rng;
     CTrackMonitor m_monitor;

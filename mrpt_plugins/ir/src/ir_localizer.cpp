@@ -1,6 +1,7 @@
 /* rfir: Monte Carlo localization on the IR emitter map (thesis Algorithm 3). */
 #include <rfir/ir/ir_localizer.h>
 #include <rfir/models/read_model.h>
+#include <rfir/models/robot_resampling.h>
 #include <rfir/obs/ir_codes.h>
 #include <rfir/obs/ir_decoder.h>
 
@@ -36,19 +37,19 @@ CIRLocalizer::CIRLocalizer(std::shared_ptr<rfir::maps::CIREmitterMap> map,
                            const TLocalizerParams& p, uint64_t seed)
     : m_map(std::move(map)),
       m_params(p),
-      m_pdf(p.numParticles, m_step),
+      m_pdf(p.numParticles, m_rng, m_step),
       m_monitor(p.robust, m_map ? m_map->emitters().emitters().size() : 0) {
     if (!m_map || m_map->isEmpty())
         throw std::invalid_argument("CIRLocalizer: the emitter map is empty");
     m_step.map = m_map.get();
-    // MRPT's motion sampling and resampling draw from the global generator.
-    mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
-    m_rng.randomize(uint32_t(seed * 2654435761u + 1));
-    auto& o = m_pf.m_options;
+    // The run's one generator: initialisation, motion, resampling, resetting.
+    m_rng.randomize(seed);
+    auto& o = m_pfOptions;
     o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
     o.resamplingMethod = p.resampling;
     o.BETA = p.essThreshold;
     o.adaptiveSampleSize = false;
+    m_pf.m_options = rfir::models::withoutMrptResampling(o);
     m_pdf.options.metricMap = m_map;
     double x0 = p.initX0, y0 = p.initY0, x1 = p.initX1, y1 = p.initY1;
     if (!p.initAreaSet) {
@@ -143,6 +144,7 @@ void CIRLocalizer::predict(const mrpt::poses::CPose2D& incr) {
     mrpt::obs::CActionCollection acts;
     acts.insert(mv);
     m_pf.executeOn(m_pdf, &acts, nullptr);
+    rfir::models::resampleIfNeeded(m_pdf, m_pfOptions, m_rng);
 }
 
 TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& incr,
@@ -190,6 +192,7 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
         m_step.obs = obs.get();
         m_pf.executeOn(m_pdf, nullptr, &sf);
         m_step.obs = nullptr;
+        rfir::models::resampleIfNeeded(m_pdf, m_pfOptions, m_rng);
         info.used = obs->readings.size();
     }
     info.justStarted = unique && !m_started;

@@ -1,6 +1,7 @@
 /* rfir: Monte Carlo localization on the IR emitter map (thesis Algorithm 3)
  * on MRPT's particle filter: mrpt::bayes::CParticleFilter driving a
- * mrpt::slam::CMonteCarloLocalization2D whose map is a CIREmitterMap.
+ * CIRParticles (a mrpt::slam::CMonteCarloLocalization2D) whose map is a
+ * CIREmitterMap; one generator, the localizer's, for every draw.
  * Unknown start (particles over the map's area); the estimate (eq. 5.4) is
  * reported from the first unique-ID reading on. Sensor resetting draws some
  * particles from a unique-ID reading when too few particles agree with it. */
@@ -14,7 +15,6 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose2D.h>
-#include <mrpt/random/RandomGenerators.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 #include <rfir/models/random.h>
 
@@ -160,11 +160,15 @@ class CIRLocalizer {
 
     std::shared_ptr<rfir::maps::CIREmitterMap> m_map;
     TLocalizerParams m_params;
+    /** The run's generator, seeded by the constructor's seed (before m_pdf,
+     * which draws from it). */
+    rfir::models::TRandom m_rng;
     /** The step's likelihood, refilled every step (before m_pdf: it weighs). */
     TIRStepLikelihood m_step;
     CIRParticles m_pdf;
-    mrpt::bayes::CParticleFilter m_pf;
-    rfir::models::TRandom m_rng;
+    mrpt::bayes::CParticleFilter m_pf;  //!< runs with its resampling off
+    /** The options as configured: the resampling stage after executeOn. */
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions m_pfOptions;
     CTrackMonitor m_monitor;
     bool m_started = false;
     bool m_recovering = false;  //!< after a lost-track reset, until settled

@@ -1,11 +1,15 @@
 /* rfir: the IR localizer's particle set on MRPT's particle-filter machinery:
- * a CMonteCarloLocalization2D that CParticleFilter::executeOn drives, weighed
- * by the step's likelihood (TIRStepLikelihood), built once per step from the
- * observation: the readings' terms that the gate computed for the predicted
- * particles are reused, not evaluated again. */
+ * a CMonteCarloLocalization2D that CParticleFilter::executeOn drives. Its
+ * prediction draws each particle's motion from the action's Gaussian with
+ * the run's generator (MRPT's sampler draws from its global one); its
+ * weighing asks the step's likelihood (TIRStepLikelihood), built once per
+ * step from the observation: the readings' terms that the gate computed for
+ * the predicted particles are reused, not evaluated again. Resampling
+ * follows executeOn, with the same generator (rfir/models/robot_resampling.h). */
 #pragma once
 
 #include <rfir/maps/CIREmitterMap.h>
+#include <rfir/models/random.h>
 
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 
@@ -44,18 +48,20 @@ struct TIRStepLikelihood {
 
 class CIRParticles : public mrpt::slam::CMonteCarloLocalization2D {
   public:
-    /** M particles weighed by `step` (the localizer's, outliving this set). */
-    CIRParticles(size_t M, const TIRStepLikelihood& step)
-        : mrpt::slam::CMonteCarloLocalization2D(M), m_step(&step) {}
+    /** M particles moved with `rng` and weighed by `step` (the localizer's,
+     * both outliving this set). */
+    CIRParticles(size_t M, rfir::models::TRandom& rng, const TIRStepLikelihood& step)
+        : mrpt::slam::CMonteCarloLocalization2D(M), m_rng(&rng), m_step(&step) {}
 
   protected:
-    /** MRPT's sum (CMonteCarloLocalization2D's, which starts at 1) over the
-     * step's one observation. */
-    double PF_SLAM_computeObservationLikelihoodForParticle(
-        const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o, size_t i,
-        const mrpt::obs::CSensoryFrame& sf, const mrpt::poses::CPose3D& x) const override;
+    /** The action's movement (a CPosePDFGaussian), one draw per particle;
+     * then, with an observation, log_w += the step's log-likelihood. */
+    void prediction_and_update_pfStandardProposal(
+        const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame* sf,
+        const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o) override;
 
   private:
+    rfir::models::TRandom* m_rng;
     const TIRStepLikelihood* m_step;
 };
 

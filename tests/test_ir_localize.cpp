@@ -1,10 +1,12 @@
 /* IR Monte Carlo localization on short simulated runs (rfir::sim in process):
  * accuracy against odometry alone, no lock onto a wrong repeated-ID emitter,
- * raw-window decoding, determinism. */
+ * raw-window decoding, determinism, the localizer's own generator. */
 #include <rfir/eval/metrics.h>
 #include <rfir/ir/ir_localizer.h>
 #include <rfir/obs/ir_codes.h>
 #include <rfir/sim/simulator.h>
+
+#include <mrpt/random/RandomGenerators.h>
 
 #include <gtest/gtest.h>
 
@@ -181,4 +183,39 @@ TEST(IRLocalize, Deterministic) {
         differ = differ || a.est[i].pose.x() != c.est[i].pose.x();
     }
     EXPECT_TRUE(differ);
+}
+
+// The localizer draws from its own generator only: two localizers of one
+// seed stepped in turn follow the same path, and MRPT's global generator is
+// neither reseeded nor drawn from.
+TEST(IRLocalize, OwnGenerator) {
+    auto cfg = loopConfig(1);
+    cfg.maxDuration = 15;
+    const auto out = sim::simulate(cfg, 7);
+    ir::TLocalizerParams p;
+    p.numParticles = 200;
+    mrpt::random::getRandomGenerator().randomize(11);
+    ir::CIRLocalizer a(mapOf(out, {}), p, 3), b(mapOf(out, {}), p, 3);
+    std::optional<mrpt::poses::CPose2D> last;
+    size_t compared = 0;
+    for (const auto& s : out.steps) {
+        std::optional<mrpt::poses::CPose2D> inc;
+        if (s.odometry) {
+            if (last) inc = *s.odometry - *last;
+            last = s.odometry;
+        }
+        const CObservationIRSignals* ir = nullptr;
+        for (const auto& o : s.obs)
+            if (auto q = dynamic_cast<const CObservationIRSignals*>(o.get())) ir = q;
+        const auto ia = a.step(inc, ir);
+        b.step(inc, ir);
+        if (!ia.started) continue;
+        EXPECT_EQ(a.estimate().x(), b.estimate().x());
+        EXPECT_EQ(a.estimate().phi(), b.estimate().phi());
+        compared++;
+    }
+    EXPECT_GT(compared, 50u);
+    mrpt::random::CRandomGenerator fresh(11);
+    EXPECT_EQ(mrpt::random::getRandomGenerator().drawUniform32bit(),
+              fresh.drawUniform32bit());
 }

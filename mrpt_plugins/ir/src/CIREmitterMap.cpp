@@ -54,40 +54,47 @@ std::optional<size_t> CIREmitterMap::associate(const CObservationIRSignals::TRea
         rfir::ir::receiverInWorld(*m_reference, r.receiver));
 }
 
+bool CIREmitterMap::outOfArea(const CObservationIRSignals& obs,
+                              const mrpt::math::TPose2D& robot) const {
+    const auto& lp = likelihoodOptions.params;
+    if (lp.outOfAreaLogLik == 0 || obs.readings.empty()) return false;
+    double x0, y0, x1, y1;
+    m_emitters.bounds(x0, y0, x1, y1);
+    const double m = lp.areaMargin;
+    return robot.x < x0 - m || robot.x > x1 + m || robot.y < y0 - m || robot.y > y1 + m;
+}
+
+bool CIREmitterMap::countsAsMiss(const CObservationIRSignals::TReading& r,
+                                 const mrpt::math::TPose2D& robot) const {
+    const auto& lp = likelihoodOptions.params;
+    // A receiver that saw nothing (not an undecoded raw window).
+    if (!r.codes.empty() || r.hasRaw() || lp.missLogLik == 0) return false;
+    const double h = likelihoodOptions.verticalDistance > 0
+                         ? likelihoodOptions.verticalDistance
+                         : lp.curve.fitHeight;
+    const double R = std::min(rfir::ir::TEmitterSet::kGridCell,
+                              lp.missRadiusFraction * lp.curve.visibleRadius(h));
+    const auto q = rfir::ir::receiverInWorld(robot, r.receiver);
+    // An emitter known to have failed (weight 0) says nothing by its silence.
+    const auto k = m_emitters.nearestIndexWithin(q.x, q.y, R);
+    return k && (*k >= m_weights.size() || m_weights[*k] != 0);
+}
+
+std::optional<CIREmitterMap::TReadingTerm> CIREmitterMap::readingTerm(
+    const CObservationIRSignals::TReading& r, const mrpt::math::TPose2D& robot) const {
+    const auto idx = associate(r, robot);
+    if (!idx) return std::nullopt;
+    const auto& e = m_emitters.emitters()[*idx];
+    return TReadingTerm{*idx,
+                        rfir::ir::readingLogLikelihood(
+                            r.volts, rfir::ir::receiverInWorld(robot, r.receiver), e,
+                            verticalDistance(e, r.receiver), likelihoodOptions.params)};
+}
+
 double CIREmitterMap::observationLogLikelihood(const CObservationIRSignals& obs,
                                                const mrpt::math::TPose2D& robot) const {
-    double ll = 0;
-    const auto& lp = likelihoodOptions.params;
-    if (lp.outOfAreaLogLik != 0 && !obs.readings.empty()) {
-        double x0, y0, x1, y1;
-        m_emitters.bounds(x0, y0, x1, y1);
-        const double m = lp.areaMargin;
-        if (robot.x < x0 - m || robot.x > x1 + m || robot.y < y0 - m || robot.y > y1 + m)
-            ll += lp.outOfAreaLogLik;
-    }
-    for (const auto& r : obs.readings) {
-        // A receiver that saw nothing (not an undecoded raw window).
-        if (r.codes.empty() && !r.hasRaw() && lp.missLogLik != 0) {
-            const double h = likelihoodOptions.verticalDistance > 0
-                                 ? likelihoodOptions.verticalDistance
-                                 : lp.curve.fitHeight;
-            const double R = std::min(rfir::ir::TEmitterSet::kGridCell,
-                                      lp.missRadiusFraction * lp.curve.visibleRadius(h));
-            const auto q = rfir::ir::receiverInWorld(robot, r.receiver);
-            // An emitter known to have failed (weight 0) says nothing by its silence.
-            const auto k = m_emitters.nearestIndexWithin(q.x, q.y, R);
-            if (k && (*k >= m_weights.size() || m_weights[*k] != 0)) ll += lp.missLogLik;
-            continue;
-        }
-        const auto idx = associate(r, robot);
-        if (!idx) continue;
-        const auto& e = m_emitters.emitters()[*idx];
-        const double w = *idx < m_weights.size() ? m_weights[*idx] : 1.0;
-        ll += w * rfir::ir::readingLogLikelihood(
-                      r.volts, rfir::ir::receiverInWorld(robot, r.receiver), e,
-                      verticalDistance(e, r.receiver), likelihoodOptions.params);
-    }
-    return ll;
+    return observationLogLikelihood(
+        obs, robot, [&](size_t k) { return readingTerm(obs.readings[k], robot); });
 }
 
 double CIREmitterMap::internal_computeObservationLikelihood(

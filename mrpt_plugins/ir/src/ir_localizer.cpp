@@ -1,6 +1,7 @@
 /* rfir: Monte Carlo localization on the IR emitter map (thesis Algorithm 3). */
 #include <rfir/ir/ir_localizer.h>
 #include <rfir/models/read_model.h>
+#include <rfir/models/robot_resampling.h>
 #include <rfir/obs/ir_codes.h>
 #include <rfir/obs/ir_decoder.h>
 
@@ -36,18 +37,19 @@ CIRLocalizer::CIRLocalizer(std::shared_ptr<rfir::maps::CIREmitterMap> map,
                            const TLocalizerParams& p, uint64_t seed)
     : m_map(std::move(map)),
       m_params(p),
-      m_pdf(p.numParticles),
+      m_pdf(p.numParticles, m_rng, m_step),
       m_monitor(p.robust, m_map ? m_map->emitters().emitters().size() : 0) {
     if (!m_map || m_map->isEmpty())
         throw std::invalid_argument("CIRLocalizer: the emitter map is empty");
-    // MRPT's motion sampling and resampling draw from the global generator.
-    mrpt::random::getRandomGenerator().randomize(uint32_t(seed));
-    m_rng.randomize(uint32_t(seed * 2654435761u + 1));
-    auto& o = m_pf.m_options;
+    m_step.map = m_map.get();
+    // The run's one generator: initialisation, motion, resampling, resetting.
+    m_rng.randomize(seed);
+    auto& o = m_pfOptions;
     o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
     o.resamplingMethod = p.resampling;
     o.BETA = p.essThreshold;
     o.adaptiveSampleSize = false;
+    m_pf.m_options = rfir::models::withoutMrptResampling(o);
     m_pdf.options.metricMap = m_map;
     double x0 = p.initX0, y0 = p.initY0, x1 = p.initX1, y1 = p.initY1;
     if (!p.initAreaSet) {
@@ -142,6 +144,7 @@ void CIRLocalizer::predict(const mrpt::poses::CPose2D& incr) {
     mrpt::obs::CActionCollection acts;
     acts.insert(mv);
     m_pf.executeOn(m_pdf, &acts, nullptr);
+    rfir::models::resampleIfNeeded(m_pdf, m_pfOptions, m_rng);
 }
 
 TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& incr,
@@ -159,6 +162,7 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
                                                            : std::nullopt);
     // Readings that contradict the predicted particles are outliers, unless
     // enough unique IDs agree that the track is lost.
+    m_step.terms.clear();
     const auto lostAt = obs ? gate(*obs, info) : std::nullopt;
     bool unique = false;
     if (obs)
@@ -171,6 +175,8 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
         // Redraw every particle from the reading that declared it.
         auto& rs = obs->readings;
         std::rotate(rs.begin(), rs.begin() + long(*lostAt), rs.end());
+        auto& ts = m_step.terms;  // parallel to the readings
+        std::rotate(ts.begin(), ts.begin() + long(*lostAt), ts.end());
         info.lost = true;
         info.lostId = emitterIdFromCodes(rs.front().codes);
         info.resetParticles = sensorReset(*obs, true);
@@ -183,7 +189,10 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
     if (obs && !obs->readings.empty()) {
         mrpt::obs::CSensoryFrame sf;
         sf.insert(obs);
+        m_step.obs = obs.get();
         m_pf.executeOn(m_pdf, nullptr, &sf);
+        m_step.obs = nullptr;
+        rfir::models::resampleIfNeeded(m_pdf, m_pfOptions, m_rng);
         info.used = obs->readings.size();
     }
     info.justStarted = unique && !m_started;
@@ -247,6 +256,7 @@ size_t CIRLocalizer::sensorReset(const CObservationIRSignals& obs, bool all) {
         for (size_t k = 0; k < n; k++) {
             auto& p = m_pdf.m_particles[perm[k]];
             drawFromReadings(same, e, p.d);
+            m_step.forget(perm[k]);
             p.log_w = all ? 0.0 : maxLw;
         }
         return n;

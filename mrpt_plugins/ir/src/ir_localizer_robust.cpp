@@ -22,37 +22,38 @@ std::optional<size_t> CIRLocalizer::gate(CObservationIRSignals& obs,
     for (size_t i = 0; i < parts.size(); i++)
         sum += (w[i] = std::exp(parts[i].log_w - maxLw));
     const auto& ems = m_map->emitters();
-    const auto& lp = m_map->likelihoodOptions.params;
     std::vector<CObservationIRSignals::TReading> kept;
+    std::vector<std::vector<TIRStepLikelihood::TKnownTerm>> keptTerms;
     std::optional<size_t> lost;
     for (auto& r : obs.readings) {
         const auto idx = r.codes.empty() ? std::nullopt : m_map->associate(r, est);
         if (!idx) {
             kept.push_back(std::move(r));
+            keptTerms.emplace_back();
             continue;
         }
-        // Share of the predicted particles (by weight) that explain the reading.
+        // Share of the predicted particles (by weight) that explain the
+        // reading; each term is kept: the weighing adds the same ones.
+        std::vector<TIRStepLikelihood::TKnownTerm> terms(parts.size());
         double good = 0;
         for (size_t i = 0; i < parts.size(); i++) {
-            const auto j = m_map->associate(r, parts[i].d);
-            if (!j) continue;
-            const auto& e = ems.emitters()[*j];
-            const double ll =
-                readingLogLikelihood(r.volts, receiverInWorld(parts[i].d, r.receiver), e,
-                                     m_map->verticalDistance(e, r.receiver), lp);
-            if (ll > rp.gateLogLik) good += w[i];
+            const auto t = m_map->readingTerm(r, parts[i].d);
+            terms[i] = {true, t};
+            if (t && t->logLik > rp.gateLogLik) good += w[i];
         }
         const bool consistent = sum > 0 && good >= rp.gateMinFraction * sum;
         const std::string id = emitterIdFromCodes(r.codes);
         const bool isLost =
             m_monitor.noteReading(*idx, id, ems.isUnambiguous(id), consistent);
         if (isLost && !lost) lost = kept.size();
-        if (consistent || isLost)
+        if (consistent || isLost) {
             kept.push_back(std::move(r));
-        else
+            keptTerms.push_back(std::move(terms));
+        } else
             info.gated++;
     }
     obs.readings = std::move(kept);
+    m_step.terms = std::move(keptTerms);
     std::vector<double> weights;
     for (const auto& h : m_monitor.health()) weights.push_back(h.weight);
     m_map->setEmitterWeights(std::move(weights));

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <rfir/maps/CRFIDTagParticleMap.h>
+#include <rfir/models/range_bearing.h>
+#include <rfir/models/read_model.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
 
 #include <mrpt/math/wrap2pi.h>
@@ -83,11 +85,11 @@ struct CRFIDTagParticleMapImpl {
                                             const mrpt::math::TPoint2D& p) {
         const auto& C = e.spreadOrigin;
         const auto& S = e.spreadPoses[j % e.spreadPoses.size()];
-        const double c = std::cos(C.phi), s = std::sin(C.phi);
-        const double lx = c * (p.x - C.x) + s * (p.y - C.y),
-                     ly = -s * (p.x - C.x) + c * (p.y - C.y);
-        const double cs = std::cos(S.phi), ss = std::sin(S.phi);
-        return {S.x + cs * lx - ss * ly, S.y + ss * lx + cs * ly};
+        double lx, ly;
+        rfir::models::worldToRobotFrame(C.x, C.y, std::cos(C.phi), std::sin(C.phi), p.x,
+                                        p.y, lx, ly);
+        return rfir::models::robotFrameToWorld(S, std::cos(S.phi), std::sin(S.phi), lx,
+                                               ly);
     }
 
     /** SamplesVisit: the first visit is over; move the estimator's states for
@@ -287,9 +289,7 @@ struct CRFIDTagParticleMapImpl {
     }
     static mrpt::math::TPose2D sensorPose(double sx, double sy, double syaw,
                                           const mrpt::math::TPose2D& robot) {
-        const double c = std::cos(robot.phi), sn = std::sin(robot.phi);
-        return {robot.x + c * sx - sn * sy, robot.y + sn * sx + c * sy,
-                mrpt::math::wrapToPi(robot.phi + syaw)};
+        return rfir::models::sensorPoseInWorld(robot, {sx, sy, syaw});
     }
 
     static void insertRB(Map& m, const mrpt::obs::CObservationBearingRange& o,

@@ -34,9 +34,9 @@ bool deadAt(const TSimConfig& cfg, size_t reader, double elapsed) {
  * within the configured distances of the reader's centre (world frame). */
 void addGhost(const TSimConfig& cfg, const TWorld& w, const mrpt::math::TPose2D& pose,
               rfir::obs::CObservationRFIDReaders::TReading& rd, const TFaultContext& f) {
-    const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-    const double rx = pose.x + c * rd.reader.x - s * rd.reader.y;
-    const double ry = pose.y + s * rd.reader.x + c * rd.reader.y;
+    const auto centre = rfir::models::robotFrameToWorld(
+        pose, std::cos(pose.phi), std::sin(pose.phi), rd.reader.x, rd.reader.y);
+    const double rx = centre.x, ry = centre.y;
     const double lo = cfg.rfid.ghostMinDistance, hi = cfg.rfid.ghostMaxDistance;
     std::vector<size_t> near, cand;
     w.tagsNear(rx, ry, hi, near);
@@ -230,10 +230,11 @@ mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TW
     // The noise fields (sensor_std_*, covariances) keep MRPT's defaults, as in
     // an imported text log, which cannot carry them: SLAM takes the noise from
     // its INI (rb_std_range, rb_std_bearing, equal to [range_bearing]'s defaults).
-    const auto sensor = robot + mrpt::poses::CPose2D(sp.x, sp.y, sp.yaw);
+    const auto sensor =
+        rfir::models::sensorPoseInWorld(robot.asTPose(), {sp.x, sp.y, sp.yaw});
     for (size_t i = 0; i < w.landmarks.size(); i++) {
-        const auto h = rfir::models::rangeBearingModel(
-            sensor.asTPose(), {w.landmarks[i].x, w.landmarks[i].y});
+        const auto h =
+            rfir::models::rangeBearingModel(sensor, {w.landmarks[i].x, w.landmarks[i].y});
         const double r = h.range;
         const double b = std::atan2(std::sin(h.bearing), std::cos(h.bearing));
         if (r > sp.maxRange || std::abs(b) > 0.5 * sp.fov) continue;

@@ -133,11 +133,11 @@ class CProblem {
               : Eigen::Vector3d(start_.x(), start_.y(), start_.phi());
         const Eigen::Vector3d cur = s.x.segment<3>(3 * k);
         const double c = std::cos(prev[2]), sn = std::sin(prev[2]);
-        const double dx = cur[0] - prev[0], dy = cur[1] - prev[1];
-        const double lx = c * dx + sn * dy, ly = -sn * dx + c * dy;
+        double h[3];  // the increment the two poses imply
+        rfir::models::odometryModel(prev.data(), cur.data(), c, sn, h);
+        const double lx = h[0], ly = h[1];
         const Eigen::Vector3d w(f.wxy, f.wxy, f.wphi);
-        Eigen::Vector3d r(lx - f.ux, ly - f.uy,
-                          mrpt::math::wrapToPi(cur[2] - prev[2] - f.uphi));
+        Eigen::Vector3d r(lx - f.ux, ly - f.uy, mrpt::math::wrapToPi(h[2] - f.uphi));
         r = r.cwiseProduct(w);
         if (H || g) {
             using J3 = Eigen::Matrix<double, 3, -1>;

@@ -4,6 +4,7 @@
 #include "graph_smoother_internal.h"
 
 #include <rfir/models/odometry_noise.h>
+#include <rfir/models/read_model.h>
 #include <rfir/slam/detections.h>
 
 #include <mrpt/math/wrap2pi.h>
@@ -82,7 +83,7 @@ double readCost(const TGraph& g, const std::vector<TPose>& x, size_t a, size_t b
         if (p.k < a || p.k > b) continue;
         for (size_t j : p.tags) {
             double ex, ey;
-            readOffset(x[p.k].data(), g.m[j].data(), p.cx, p.cy, ex, ey);
+            rfir::models::readModel(x[p.k].data(), g.m[j].data(), p.cx, p.cy, ex, ey);
             const double dx = std::max(0.0, std::abs(ex) - p.hx) / p.hx;
             const double dy = std::max(0.0, std::abs(ey) - p.hy) / p.hy;
             c += std::min(25.0, dx * dx + dy * dy);  // capped: ghost reads
@@ -199,7 +200,7 @@ std::pair<size_t, size_t> addFactors(ceres::Problem& pb, TGraph& g, TPose& start
         const double mx = q.hx + 0.5 * q.hx + 0.05, my = q.hy + 0.5 * q.hy + 0.05;
         for (size_t j = 0; j < g.m.size(); j++) {
             double ex, ey;
-            readOffset(x.data(), g.m[j].data(), q.cx, q.cy, ex, ey);
+            rfir::models::readModel(x.data(), g.m[j].data(), q.cx, q.cy, ex, ey);
             if (std::abs(ex) > mx || std::abs(ey) > my) continue;
             if (std::find(q.tags.begin(), q.tags.end(), j) != q.tags.end()) continue;
             auto* f = new ceres::AutoDiffCostFunction<CMissCost, 1, 3, 2>(

@@ -1,25 +1,17 @@
 /* rfir: the robust smoother's factors as Ceres auto-differentiated cost
  * functors (graph_smoother_ceres.cpp). Poses are (x, y, phi) with phi
- * unwrapped along the path; tags (x, y). The read model is read_model.h's
- * e = R(phi)^T (tag - t) - reader centre, written here over Jets. */
+ * unwrapped along the path; tags (x, y). The read model and the odometry
+ * model are the models layer's templates, evaluated here over Jets. */
 #pragma once
+
+#include <rfir/models/odometry_noise.h>
+#include <rfir/models/read_model.h>
 
 #include <ceres/ceres.h>
 
 #include <cmath>
 
 namespace rfir::slam::detail {
-/** e of read_model.h (readModel) for any scalar type. */
-template <class T>
-void readOffset(const T* p, const T* m, double cx, double cy, T& ex, T& ey) {
-    using std::cos;
-    using std::sin;
-    const T c = cos(p[2]), s = sin(p[2]);
-    const T dx = m[0] - p[0], dy = m[1] - p[1];
-    ex = c * dx + s * dy - cx;
-    ey = -s * dx + c * dy - cy;
-}
-
 /** |e| smoothed over tau (sqrt(e^2 + tau^2)): differentiable at 0. */
 template <class T>
 T smoothAbs(const T& e, double tau) {
@@ -56,12 +48,12 @@ struct COdometryCost {
     bool operator()(const T* p, const T* c, const T* b, T* r) const {
         using std::cos;
         using std::sin;
-        const T cs = cos(p[2]), sn = sin(p[2]);
-        const T dx = c[0] - p[0], dy = c[1] - p[1];
+        T h[3];
+        rfir::models::odometryModel(p, c, T(cos(p[2])), T(sin(p[2])), h);
         const T s = T(1) + b[0];
-        r[0] = wxy * (cs * dx + sn * dy - s * ux);
-        r[1] = wxy * (-sn * dx + cs * dy - s * uy);
-        r[2] = wphi * (c[2] - p[2] - uphi - b[1] * d);
+        r[0] = wxy * (h[0] - s * ux);
+        r[1] = wxy * (h[1] - s * uy);
+        r[2] = wphi * (h[2] - uphi - b[1] * d);
         return true;
     }
 };
@@ -73,7 +65,7 @@ struct CReadCost {
     template <class T>
     bool operator()(const T* p, const T* m, T* r) const {
         T ex, ey;
-        readOffset(p, m, cx, cy, ex, ey);
+        rfir::models::readModel(p, m, cx, cy, ex, ey);
         // The rounded corner lies outside the square: a tag on its edge costs
         // nothing (the band between this and CMissCost's favours neither).
         r[0] = hinge(ex, hx + tauX, tauX) / sx;
@@ -90,7 +82,7 @@ struct CGaussianReadCost {
     template <class T>
     bool operator()(const T* p, const T* m, T* r) const {
         T ex, ey;
-        readOffset(p, m, cx, cy, ex, ey);
+        rfir::models::readModel(p, m, cx, cy, ex, ey);
         r[0] = ex * wx;
         r[1] = ey * wy;
         return true;
@@ -106,7 +98,7 @@ struct CMissCost {
         using std::log;
         using std::sqrt;
         T ex, ey;
-        readOffset(p, m, cx, cy, ex, ey);
+        rfir::models::readModel(p, m, cx, cy, ex, ey);
         // The logistic's slope lies inside the square: a tag just outside
         // it, as every unread tag near a reader is, costs nothing (a soft
         // edge on the square itself pushed the whole map outwards).

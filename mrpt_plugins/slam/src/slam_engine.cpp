@@ -1,5 +1,5 @@
+#include <rfir/models/robot_resampling.h>
 #include <rfir/slam/CFastSLAMParticles.h>
-#include <rfir/slam/robot_resampling.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
 
@@ -26,7 +26,7 @@ class CFastSLAMEngine : public CSlamEngine {
   public:
     CFastSLAMEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
         : cfg_(c), hdr_(h), pf_(c.fastslam) {
-        filter_.m_options = withoutMrptResampling(c.slam.pfOptions());
+        filter_.m_options = rfir::models::withoutMrptResampling(c.slam.pfOptions());
     }
     void reset(const mrpt::poses::CPose2D& start) override {
         rng_.randomize(cfg_.seed);  // the run's one generator (--seed)
@@ -41,7 +41,7 @@ class CFastSLAMEngine : public CSlamEngine {
         pf_.setDetections(&dets);
         const auto acts = motionAction(in, cfg_.motion, slip_);
         filter_.executeOn(pf_, &acts, nullptr);  // motion, weighing, normalising
-        resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
+        rfir::models::resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
         pf_.setDetections(nullptr);
         pose_ = pf_.meanPose();
     }

@@ -1,8 +1,8 @@
 #include <rfir/maps/CRFIDTagParticleMap.h>
 #include <rfir/models/ini_reader.h>
 #include <rfir/models/resampling.h>
+#include <rfir/models/robot_resampling.h>
 #include <rfir/slam/CRobotPoseParticles.h>
-#include <rfir/slam/robot_resampling.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
 
@@ -40,7 +40,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
   public:
     CTagMapEngine(const TSlamConfig& c, const rfir::obs::CObservationLogHeader& h)
         : cfg_(c), hdr_(h), kidnap_(c.kidnap) {
-        filter_.m_options = withoutMrptResampling(c.slam.pfOptions());
+        filter_.m_options = rfir::models::withoutMrptResampling(c.slam.pfOptions());
         pf_.setStepModel(this);
     }
     CTagMapEngine(const CTagMapEngine&) = delete;
@@ -221,7 +221,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
     // 5. the kidnap check on this weighing (sensor resetting if lost);
     checkKidnap();
     // 6. resample when the ESS is low (MRPT's scheme, engine's generator);
-    resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
+    rfir::models::resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
     reads_.clear();
     // 7. the estimate, and the tag update of the revisit policies.
     pose_ = pf_.meanPose();

@@ -1,11 +1,13 @@
 /* rfir: Monte Carlo localization on the IR emitter map (thesis Algorithm 3)
  * on MRPT's particle filter: mrpt::bayes::CParticleFilter driving a
- * mrpt::slam::CMonteCarloLocalization2D whose map is a CIREmitterMap.
+ * CIRParticles (a mrpt::slam::CMonteCarloLocalization2D) whose map is a
+ * CIREmitterMap; one generator, the localizer's, for every draw.
  * Unknown start (particles over the map's area); the estimate (eq. 5.4) is
  * reported from the first unique-ID reading on. Sensor resetting draws some
  * particles from a unique-ID reading when too few particles agree with it. */
 #pragma once
 
+#include <rfir/ir/ir_particles.h>
 #include <rfir/ir/track_monitor.h>
 #include <rfir/maps/CIREmitterMap.h>
 
@@ -13,7 +15,6 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose2D.h>
-#include <mrpt/random/RandomGenerators.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 #include <rfir/models/random.h>
 
@@ -139,7 +140,8 @@ class CIRLocalizer {
         TSeen& seen) const;
     /** Drops the readings inconsistent with the predicted particles (while
      * they are confident), feeds the emitter health; returns the index of a
-     * reading that declares the track lost, if any. */
+     * reading that declares the track lost, if any. The terms it evaluates
+     * for the kept readings go to m_step, for the weighing. */
     std::optional<size_t> gate(rfir::obs::CObservationIRSignals& obs,
                                TLocalizerStep& info);
     /** Expected answers: emitters the estimate puts a receiver under. */
@@ -158,9 +160,15 @@ class CIRLocalizer {
 
     std::shared_ptr<rfir::maps::CIREmitterMap> m_map;
     TLocalizerParams m_params;
-    mrpt::slam::CMonteCarloLocalization2D m_pdf;
-    mrpt::bayes::CParticleFilter m_pf;
+    /** The run's generator, seeded by the constructor's seed (before m_pdf,
+     * which draws from it). */
     rfir::models::TRandom m_rng;
+    /** The step's likelihood, refilled every step (before m_pdf: it weighs). */
+    TIRStepLikelihood m_step;
+    CIRParticles m_pdf;
+    mrpt::bayes::CParticleFilter m_pf;  //!< runs with its resampling off
+    /** The options as configured: the resampling stage after executeOn. */
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions m_pfOptions;
     CTrackMonitor m_monitor;
     bool m_started = false;
     bool m_recovering = false;  //!< after a lost-track reset, until settled

@@ -66,10 +66,28 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
     double verticalDistance(const rfir::ir::TEmitter& e,
                             const rfir::obs::TIRReceiver& r) const;
 
+    /** A reading's term for a robot pose: the emitter it is attributed to
+     * (associate) and its log-likelihood before that emitter's weight. */
+    struct TReadingTerm {
+        size_t emitter;
+        double logLik;
+    };
+    /** The term of reading r at `robot`; nullopt when it is not attributed. */
+    std::optional<TReadingTerm> readingTerm(
+        const rfir::obs::CObservationIRSignals::TReading& r,
+        const mrpt::math::TPose2D& robot) const;
+
     /** Sum over the readings of the log-likelihood (eq. 5.2 with 5.3). Readings
      * with no code (raw windows not decoded yet) are skipped. */
     double observationLogLikelihood(const rfir::obs::CObservationIRSignals& obs,
                                     const mrpt::math::TPose2D& robot) const;
+    /** The same sum with the readings' terms from `termOf(k)` (reading k's
+     * readingTerm at `robot`): a caller that already evaluated them (the
+     * localizer's gate) passes them instead of evaluating them again. */
+    template <class TermOf>
+    double observationLogLikelihood(const rfir::obs::CObservationIRSignals& obs,
+                                    const mrpt::math::TPose2D& robot,
+                                    TermOf&& termOf) const;
 
     struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
         rfir::ir::TIRLikelihoodParams params;
@@ -110,10 +128,40 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
         const mrpt::obs::CObservation& obs) const override;
 
   private:
+    /** The area term (outOfAreaLogLik) applies to `robot`. */
+    bool outOfArea(const rfir::obs::CObservationIRSignals& obs,
+                   const mrpt::math::TPose2D& robot) const;
+    /** A receiver that saw nothing counts as a miss (missLogLik) at `robot`. */
+    bool countsAsMiss(const rfir::obs::CObservationIRSignals::TReading& r,
+                      const mrpt::math::TPose2D& robot) const;
+    double emitterWeight(size_t i) const {
+        return i < m_weights.size() ? m_weights[i] : 1.0;
+    }
+
     rfir::ir::TEmitterSet m_emitters;
     std::optional<mrpt::math::TPose2D> m_reference;
     std::vector<double> m_weights;
 };
+
+template <class TermOf>
+double CIREmitterMap::observationLogLikelihood(
+    const rfir::obs::CObservationIRSignals& obs, const mrpt::math::TPose2D& robot,
+    TermOf&& termOf) const {
+    const auto& lp = likelihoodOptions.params;
+    double ll = 0;
+    if (outOfArea(obs, robot)) ll += lp.outOfAreaLogLik;
+    for (size_t k = 0; k < obs.readings.size(); k++) {
+        const auto& r = obs.readings[k];
+        // No code: a receiver that saw nothing, or an undecoded raw window.
+        if (r.codes.empty()) {
+            if (countsAsMiss(r, robot)) ll += lp.missLogLik;
+            continue;
+        }
+        const std::optional<TReadingTerm> t = termOf(k);
+        if (t) ll += emitterWeight(t->emitter) * t->logLik;
+    }
+    return ll;
+}
 
 /** Registers the library's classes with MRPT (also done at load time; calling
  * it keeps the library linked under --as-needed). Idempotent. */

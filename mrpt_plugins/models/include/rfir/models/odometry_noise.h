@@ -6,6 +6,7 @@
 #pragma once
 
 #include <rfir/models/random.h>
+#include <rfir/models/read_model.h>
 
 #include <cmath>
 
@@ -77,6 +78,17 @@ class OdometryGaussian {
     double m_C[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     double m_L[6] = {0, 0, 0, 0, 0, 0};  //!< L00, L10, L11, L20, L21, L22
 };
+
+/** The odometry model h(prev, cur), any scalar (double, ceres::Jet): the
+ * increment u = prev^-1 (+) cur that two poses (x, y, phi) imply, cur's
+ * position in prev's frame and the turn, not wrapped; c, s = cos, sin of
+ * prev's heading. The smoothers' odometry factors compare it with the
+ * measured increment. */
+template <class T>
+void odometryModel(const T* prev, const T* cur, const T& c, const T& s, T* u) {
+    worldToRobotFrame(prev[0], prev[1], c, s, cur[0], cur[1], u[0], u[1]);
+    u[2] = cur[2] - prev[2];
+}
 
 /** Residual weights of the smoother's odometry factor: 1/std of the xy and
  * heading residuals of increment u (the same stds the filters draw with). */

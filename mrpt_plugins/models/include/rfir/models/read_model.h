@@ -4,7 +4,9 @@
  *     e = R(phi)^T (tag - t) - offset,
  * with its Jacobians wrt the pose (x, y, phi) and the tag. The noise objects
  * that turn e into a log-likelihood are apart from it (read_noise.h). Inline
- * and allocation-free: it runs once per particle and read. */
+ * and allocation-free: it runs once per particle and read. The robot filters,
+ * the FastSLAM EKF, the smoothers' factors, the kidnap check, the evaluation
+ * and the simulator all call it. */
 #pragma once
 
 #include <mrpt/math/TPoint2D.h>
@@ -19,6 +21,31 @@ struct TReadJacobians {
     double tag[2][2];
 };
 
+/** A world point (px, py) in the frame of the pose at (x, y) with heading
+ * cos c and sin s: R(phi)^T (p - t). A template over the scalar, so that the
+ * smoother's automatic differentiation (ceres::Jet) evaluates these same
+ * lines; `using std::cos` style calls keep it free of any Ceres header. */
+template <class T>
+void worldToRobotFrame(const T& x, const T& y, const T& c, const T& s, const T& px,
+                       const T& py, T& lx, T& ly) {
+    const T dx = px - x, dy = py - y;
+    lx = c * dx + s * dy;
+    ly = -s * dx + c * dy;
+}
+
+/** The read model over any scalar: pose = (x, y, phi), tag = (x, y), e = the
+ * tag minus the reader centre (offX, offY), robot frame. */
+template <class T>
+void readModel(const T* pose, const T* tag, double offX, double offY, T& ex, T& ey) {
+    using std::cos;
+    using std::sin;
+    const T c = cos(pose[2]), s = sin(pose[2]);
+    T lx, ly;
+    worldToRobotFrame(pose[0], pose[1], c, s, tag[0], tag[1], lx, ly);
+    ex = lx - offX;
+    ey = ly - offY;
+}
+
 /** e = R(phi)^T (tag - t) - (offX, offY), given c = cos(phi), s = sin(phi) (a
  * particle weighed against several reads computes them once). The reader
  * offset is fixed on the robot, so it does not enter the Jacobians. */
@@ -26,8 +53,8 @@ inline mrpt::math::TPoint2D readModel(const mrpt::math::TPose2D& robot, double c
                                       double s, double offX, double offY,
                                       const mrpt::math::TPoint2D& tag,
                                       TReadJacobians* J = nullptr) {
-    const double dx = tag.x - robot.x, dy = tag.y - robot.y;
-    const double lx = c * dx + s * dy, ly = -s * dx + c * dy;  // tag, robot frame
+    double lx, ly;  // tag, robot frame
+    worldToRobotFrame(robot.x, robot.y, c, s, tag.x, tag.y, lx, ly);
     if (J) {
         J->pose[0][0] = -c, J->pose[0][1] = -s, J->pose[0][2] = ly;
         J->pose[1][0] = s, J->pose[1][1] = -c, J->pose[1][2] = -lx;

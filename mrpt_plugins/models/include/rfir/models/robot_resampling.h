@@ -1,8 +1,9 @@
 /* rfir: the robot filters' resampling stage with the run's generator. MRPT's
  * CParticleFilterCapable::performResampling (not virtual) draws from MRPT's
- * global generator, so the engines give CParticleFilter a BETA of 0 (its own
- * stage never fires) and call this right after executeOn, with MRPT's own
- * options: the same ESS test and scheme, the engine's generator. */
+ * global generator, so the engines (rfir-slam's robot filters, the IR
+ * localizer) give CParticleFilter a BETA of 0 (its own stage never fires) and
+ * call this right after executeOn, with MRPT's own options: the same ESS test
+ * and scheme, the engine's generator. */
 #pragma once
 
 #include <rfir/models/random.h>
@@ -12,7 +13,7 @@
 
 #include <vector>
 
-namespace rfir::slam {
+namespace rfir::models {
 /** The options CParticleFilter runs with: `o` with its resampling stage off. */
 mrpt::bayes::CParticleFilter::TParticleFilterOptions withoutMrptResampling(
     mrpt::bayes::CParticleFilter::TParticleFilterOptions o);
@@ -30,4 +31,4 @@ bool resampleIfNeeded(mrpt::bayes::CParticleFilterCapable& pf,
                       const mrpt::bayes::CParticleFilter::TParticleFilterOptions& o,
                       rfir::models::TRandom& rng);
 
-}  // namespace rfir::slam
+}  // namespace rfir::models

@@ -1,11 +1,11 @@
 /* rfir: resampling of the robot filters with the run's generator. */
 #include <rfir/models/resampling.h>
-#include <rfir/slam/robot_resampling.h>
+#include <rfir/models/robot_resampling.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace rfir::slam {
+namespace rfir::models {
 using PF = mrpt::bayes::CParticleFilter;
 
 PF::TParticleFilterOptions withoutMrptResampling(PF::TParticleFilterOptions o) {
@@ -71,4 +71,4 @@ bool resampleIfNeeded(mrpt::bayes::CParticleFilterCapable& pf,
     return true;
 }
 
-}  // namespace rfir::slam
+}  // namespace rfir::models

@@ -111,18 +111,40 @@ TEST(TagMapReads, MapLikelihoodIsTheSumOfTheReadsTerms) {
         }
 }
 
-TEST(TagMapReads, PlainTermsAreReusedForCurrentTagMeanReads) {
+TEST(TagMapReads, BaseSumIsTheSumWithoutTheOutlierMixture) {
+    // The weighing mixes each read's term; the kidnap check reads the base
+    // sum, which the mixture would cap at log(eps) + floor per read.
     const auto readers = ring(0.03);
-    CRFIDTagParticleMap m;  // literal: every read of a mapped tag weighs
-    const auto o = sense(readers, {{"A", 0.11, 0.01}}, {0, 0, 0});
-    m.insertObservation(*o, pose3({0, 0, 0}));
-    CRFIDTagParticleMap::TRobotReads r;
-    ASSERT_TRUE(m.resolveRobotReads(*o, r));
-    ASSERT_EQ(r.reads.size(), 1u);
-    EXPECT_TRUE(r.reads[0].plainCurrent);
-    const mrpt::math::TPose2D p(0.01, -0.02, 0.1);
-    const double t = m.detectionLogLikelihood(*m.getTag("A"), p, r.reads[0].area);
-    EXPECT_EQ(m.robotReadsLogLikelihood(r, p), t);
-    const double fake = -7.25;  // the given term is used, not recomputed
-    EXPECT_EQ(m.robotReadsLogLikelihood(r, p, &fake), fake);
+    for (const double eps : {0.0, 0.005}) {
+        CRFIDTagParticleMap m;  // literal: every read of a mapped tag weighs
+        m.likelihoodOptions.detection.outlierWeight = eps;
+        const auto o = sense(readers, {{"A", 0.11, 0.01}}, {0, 0, 0});
+        m.insertObservation(*o, pose3({0, 0, 0}));
+        CRFIDTagParticleMap::TRobotReads r;
+        ASSERT_TRUE(m.resolveRobotReads(*o, r));
+        ASSERT_EQ(r.reads.size(), 1u);
+        const mrpt::math::TPose2D near(0.01, -0.02, 0.1), far(1.5, 0.4, 0.1);
+        const rfir::models::DetectionLikelihood base([&] {
+            auto p = m.likelihoodOptions.detection;
+            p.outlierWeight = 0;
+            return p;
+        }());
+        const auto* tag = m.getTag("A");
+        for (const auto& p : {near, far}) {
+            double b = 1;
+            const double mixed = m.robotReadsLogLikelihood(r, p, &b);
+            EXPECT_EQ(mixed, m.detectionLogLikelihood(*tag, p, r.reads[0].area));
+            EXPECT_DOUBLE_EQ(b,
+                             base.logLikelihood(p, r.reads[0].area, tag->estimate.mean));
+            if (eps == 0) {
+                EXPECT_EQ(b, mixed);
+            }
+        }
+        double bFar = 0;
+        const double mixedFar = m.robotReadsLogLikelihood(r, far, &bFar);
+        if (eps > 0) {
+            EXPECT_LT(bFar, -100.0);                           // 1.5 m off a 30 mm reader
+            EXPECT_GT(mixedFar, std::log(eps) - 10.0 - 1e-9);  // capped
+        }
+    }
 }

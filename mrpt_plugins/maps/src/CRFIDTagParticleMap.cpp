@@ -140,10 +140,7 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
     // The lookups and policy tests: they do not depend on the robot pose.
     out = TRobotReads();
     out.det = rfir::models::DetectionLikelihood(likelihoodOptions.detection);
-    const bool particles =
-        likelihoodOptions.robotLikelihood == TRobotLikelihood::TagParticles;
     if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs)) {
-        size_t known = 0;
         for (const auto& rd : o->readings)
             for (const auto& id : rd.tags) {
                 const auto it = m_tags.find(id);
@@ -156,12 +153,9 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
                     r.est = cur ? &e.estimate : &e.visitStartEstimate;
                     r.sample = cur ? &e.sample : &e.visitStartSample;
                     r.area = Impl::area(rd.reader);
-                    r.known = known;
-                    r.plainCurrent = cur && (!particles || e.sample.empty());
                     r.id = &it->first;
                     out.reads.push_back(r);
                 }
-                known++;
             }
         return true;
     }
@@ -189,26 +183,29 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
 
 double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
                                                     const mrpt::math::TPose2D& robot,
-                                                    const double* plainTerms) const {
+                                                    double* baseSum) const {
     return robotReadsLogLikelihood(r, robot, std::cos(robot.phi), std::sin(robot.phi),
-                                   plainTerms);
+                                   baseSum);
 }
 
 double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
                                                     const mrpt::math::TPose2D& robot,
                                                     double c, double s,
-                                                    const double* plainTerms) const {
-    double sum = 0;
+                                                    double* baseSum) const {
+    double sum = 0, base = 0;
     if (!r.rangeBearing) {
-        for (const auto& rd : r.reads)
-            sum += plainTerms && rd.plainCurrent
-                       ? plainTerms[rd.known]
-                       : Impl::robotReadLogLik(*this, *rd.est, *rd.sample, robot, c, s,
-                                               rd.area, r.det);
+        for (const auto& rd : r.reads) {
+            const double b = Impl::robotReadLogLik(*this, *rd.est, *rd.sample, robot, c,
+                                                   s, rd.area, r.det);
+            sum += r.det.withOutliers(b);
+            base += b;
+        }
+        if (baseSum) *baseSum = base;
         return sum;
     }
     const auto sensor = Impl::sensorPose(r.sensorX, r.sensorY, r.sensorYaw, robot);
     for (const auto& rd : r.reads)
         sum += Impl::rbLogLik(*this, *rd.est, sensor, rd.range, rd.yaw);
+    if (baseSum) *baseSum = sum;  // no mixture on range-bearing reads
     return sum;
 }

@@ -201,11 +201,12 @@ struct CRFIDTagParticleMapImpl {
     }
 
     /** Robot log-likelihood of one read by reader `r` of a tag with estimate
-     * `est`: against the tag mean, or (tag_particles) log of the mean
-     * likelihood over the K stored tag particles `smp`, i.e. the detection
-     * likelihood marginalised over the tag's uncertainty (O(K), K <= 64, the
-     * INI bound of robot_likelihood_k). c, s: cos and sin of robot.phi, computed
-     * once per robot pose by the caller. */
+     * `est`, base model (the caller applies the outlier mixture): against the
+     * tag mean, or (tag_particles) log of the mean likelihood over the K
+     * stored tag particles `smp`, i.e. the detection likelihood marginalised
+     * over the tag's uncertainty (O(K), K <= 64, the INI bound of
+     * robot_likelihood_k). c, s: cos and sin of robot.phi, computed once per
+     * robot pose by the caller. */
     static double robotReadLogLik(const Map& m, const PointEstimate& est,
                                   const std::vector<mrpt::math::TPoint2D>& smp,
                                   const mrpt::math::TPose2D& robot, double c, double s,
@@ -213,12 +214,12 @@ struct CRFIDTagParticleMapImpl {
                                   const rfir::models::DetectionLikelihood& det) {
         if (m.likelihoodOptions.robotLikelihood != TRobotLikelihood::TagParticles ||
             smp.empty())
-            return det.logLikelihood(robot, c, s, r, est.mean);
+            return det.baseLogLikelihood(robot, c, s, r, est.mean);
         constexpr size_t kMax = Map::TLikelihoodOptions::kMaxRobotLikelihoodK;
         double ll[kMax], best = -1e300;
         const size_t K = std::min(smp.size(), kMax);
         for (size_t k = 0; k < K; k++)
-            best = std::max(best, ll[k] = det.logLikelihood(robot, c, s, r, smp[k]));
+            best = std::max(best, ll[k] = det.baseLogLikelihood(robot, c, s, r, smp[k]));
         double sum = 0;
         for (size_t k = 0; k < K; k++) sum += std::exp(ll[k] - best);
         return best + std::log(sum / double(K));

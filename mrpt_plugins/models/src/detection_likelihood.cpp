@@ -14,14 +14,6 @@ double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy
     return CGaussianReadNoise::logLikSigma(ex, ey, sx, sy);
 }
 
-double DetectionLikelihood::mixtureLogLik(double ex, double ey, double hx,
-                                          double hy) const {
-    const double eps = m_p.outlierWeight, fl = m_p.outlierLogFloor;
-    if (m_p.model == DetectionModel::Step)
-        return COutlierReadNoise<CStepReadNoise>(m_step, eps, fl).logLik(ex, ey, hx, hy);
-    return COutlierReadNoise<CGaussianReadNoise>(m_gauss, eps, fl).logLik(ex, ey, hx, hy);
-}
-
 double DetectionLikelihood::logLikelihood(const mrpt::math::TPose2D& robot,
                                           const ReaderArea& r,
                                           const mrpt::math::TPoint2D& tag) const {
@@ -39,10 +31,7 @@ bool DetectionLikelihood::contradicts(const mrpt::math::TPose2D& robot,
                                       const ReaderArea& r,
                                       const mrpt::math::TPoint2D& tag) const {
     const auto e = readModel(robot, r.x, r.y, tag);
-    const double base = m_p.model == DetectionModel::Step
-                            ? m_step.logLik(e.x, e.y, r.halfX, r.halfY)
-                            : m_gauss.logLik(e.x, e.y, r.halfX, r.halfY);
-    return base < m_p.outlierLogFloor;
+    return baseLogLikelihoodOffset(e.x, e.y, r.halfX, r.halfY) < m_p.outlierLogFloor;
 }
 
 double DetectionLikelihood::likelihood(const mrpt::math::TPose2D& robot,

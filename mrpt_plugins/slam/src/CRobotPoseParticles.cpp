@@ -136,19 +136,29 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
 }
 
 double CRobotPoseParticles::stepLogEvidence() const {
-    // log sum w exp(ll) - log sum w over the weights before the weighing
-    // (log_w - ll: the same terms, not a second likelihood pass). Valid until
-    // the weights change again (normalising keeps it: a common shift).
-    if (m_stepLogLik.size() != m_particles.size() || m_particles.empty()) return 0;
+    return stepLogEvidence(m_stepLogLik);
+}
+
+double CRobotPoseParticles::stepLogEvidence(const std::vector<double>& terms) const {
+    // log sum w exp(term) - log sum w over the weights before the weighing
+    // (log_w - ll: the weighing's own terms, not a second likelihood pass).
+    // Valid until the weights change again (normalising keeps it: a common
+    // shift). Where term == ll, log_w itself (no rounding of -ll + ll).
+    const size_t n = m_particles.size();
+    if (m_stepLogLik.size() != n || terms.size() != n || n == 0) return 0;
+    auto post = [&](size_t i) {
+        const double lw = m_particles[i].log_w;
+        return terms[i] == m_stepLogLik[i] ? lw : lw - m_stepLogLik[i] + terms[i];
+    };
     double maxPrior = -1e300, maxPost = -1e300;
-    for (size_t i = 0; i < m_particles.size(); i++) {
+    for (size_t i = 0; i < n; i++) {
         maxPrior = std::max(maxPrior, m_particles[i].log_w - m_stepLogLik[i]);
-        maxPost = std::max(maxPost, m_particles[i].log_w);
+        maxPost = std::max(maxPost, post(i));
     }
     double sPrior = 0, sPost = 0;
-    for (size_t i = 0; i < m_particles.size(); i++) {
+    for (size_t i = 0; i < n; i++) {
         sPrior += std::exp(m_particles[i].log_w - m_stepLogLik[i] - maxPrior);
-        sPost += std::exp(m_particles[i].log_w - maxPost);
+        sPost += std::exp(post(i) - maxPost);
     }
     return maxPost + std::log(sPost) - maxPrior - std::log(sPrior);
 }

@@ -84,10 +84,14 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     double weigh(size_t i, const mrpt::poses::CPose2D& p) const {
         // CPose3D(p) has x, y, yaw == p.x(), p.y(), p.phi() exactly.
         const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
-        double ll = 0;
+        double ll = 0, base = 0;
         const double c = p.phi_cos(), s = p.phi_sin();  // cached in the pose
-        for (const auto& r : reads_)
-            ll += map_.robotReadsLogLikelihood(r, pose, c, s, nullptr);
+        for (const auto& r : reads_) {
+            double b = 0;
+            ll += map_.robotReadsLogLikelihood(r, pose, c, s, &b);
+            base += b;
+        }
+        if (i < baseLogLik_.size()) baseLogLik_[i] = base;
         return ll;
     }
     void insert(const mrpt::poses::CPose2D& at) {
@@ -120,6 +124,9 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     bool literal_ = false;          //!< tags updated before the weighing
     bool mapThisStep_ = true;
     std::vector<CRFIDTagParticleMap::TRobotReads> reads_;
+    /** This step's weighing terms without the outlier mixture, per particle
+     * (what the kidnap check reads). */
+    mutable std::vector<double> baseLogLik_;
     std::optional<mrpt::poses::CPose2D> predictedForInsert_;
     mrpt::poses::CPose2D pose_;
     double t_ = 0;                    //!< this step's time
@@ -136,6 +143,7 @@ void CTagMapEngine::afterMotion() {
     else if (!literal_ && cfg_.slam.tag_update_pose == "predicted")
         predictedForInsert_ = pf_.meanPose();
     resolveReads();
+    baseLogLik_.assign(pf_.m_particles.size(), 0.0);
 }
 
 void CTagMapEngine::resolveReads() {
@@ -151,22 +159,24 @@ TStepEvidence CTagMapEngine::stepEvidence() const {
     TStepEvidence e;
     e.t = t_;
     for (const auto& r : reads_) e.reads += r.reads.size();
-    const auto& ll = pf_.stepLogLik();
-    if (e.reads == 0 || ll.empty()) return e;
+    // The base model's terms (the mixture off): the mixture caps a read's
+    // cost at log(eps) + floor, below any drop the detector could see.
+    const auto& ll = baseLogLik_;
+    if (e.reads == 0 || pf_.stepLogLik().empty() || ll.size() != pf_.m_particles.size())
+        return e;
     const size_t best = size_t(std::max_element(ll.begin(), ll.end()) - ll.begin());
     const double K = double(e.reads);
     e.bestMeanLogLik = ll[best] / K;
-    e.meanLogEvidence = pf_.stepLogEvidence() / K;
+    e.meanLogEvidence = pf_.stepLogEvidence(ll) / K;
     const auto& p = pf_.m_particles[best].d;
     const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
     for (const auto& r : reads_) {
         CRFIDTagParticleMap::TRobotReads one = r;
         for (const auto& rd : r.reads) {
             one.reads.assign(1, rd);
-            if (map_.robotReadsLogLikelihood(one, pose, p.phi_cos(), p.phi_sin(),
-                                             nullptr) < cfg_.kidnap.collapse_loglik &&
-                rd.id)
-                e.disagreeing.push_back(*rd.id);
+            double b = 0;
+            map_.robotReadsLogLikelihood(one, pose, p.phi_cos(), p.phi_sin(), &b);
+            if (b < cfg_.kidnap.collapse_loglik && rd.id) e.disagreeing.push_back(*rd.id);
         }
     }
     return e;

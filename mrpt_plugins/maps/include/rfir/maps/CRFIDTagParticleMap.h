@@ -143,10 +143,6 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
             const std::vector<mrpt::math::TPoint2D>* sample = nullptr;  //!< RFID
             rfir::models::ReaderArea area;                              //!< RFID
             double range = 0, yaw = 0;                                  //!< range-bearing
-            /** RFID: index among this observation's reads of mapped tags. */
-            size_t known = 0;
-            /** RFID: the term is detectionLogLikelihood(tag, robot, area). */
-            bool plainCurrent = false;
             const std::string* id = nullptr;  //!< tag or landmark ID (the map's)
         };
         bool rangeBearing = false;
@@ -157,14 +153,14 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     /** Resolves `obs` (RFID or bearing-range; false for other kinds). */
     bool resolveRobotReads(const mrpt::obs::CObservation& obs, TRobotReads& out) const;
     /** The same sum as computeObservationLikelihood(obs, robot) for the
-     * resolved reads. `plainTerms` (optional, indexed by TRead::known) holds
-     * already computed detectionLogLikelihood values for this pose, reused for
-     * the reads marked plainCurrent. */
+     * resolved reads. `baseSum` (optional) receives the sum of the same terms
+     * without the outlier mixture, which the kidnap check reads (docs/slam.md,
+     * "Kidnapping"). */
     double robotReadsLogLikelihood(const TRobotReads& r, const mrpt::math::TPose2D& robot,
-                                   const double* plainTerms = nullptr) const;
+                                   double* baseSum = nullptr) const;
     /** The same with c, s = cos, sin of robot.phi (cached by the caller). */
     double robotReadsLogLikelihood(const TRobotReads& r, const mrpt::math::TPose2D& robot,
-                                   double c, double s, const double* plainTerms) const;
+                                   double c, double s, double* baseSum) const;
 
     /** @name Instrumentation: tag entries touched (created or updated).
      * @{ */

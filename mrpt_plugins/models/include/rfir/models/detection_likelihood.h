@@ -55,14 +55,23 @@ class DetectionLikelihood {
   public:
     DetectionLikelihood() = default;
     explicit DetectionLikelihood(const DetectionModelParams& p)
-        : m_p(p), m_step(p.beta), m_gauss(p.gaussianSigmaScale) {}
+        : m_p(p),
+          m_step(p.beta),
+          m_gauss(p.gaussianSigmaScale),
+          m_mix(p.outlierWeight, p.outlierLogFloor) {}
 
     /** (ex, ey) in the robot frame, half-sizes of the detecting reader. */
     double logLikelihoodOffset(double ex, double ey, double hx, double hy) const {
-        if (m_p.outlierWeight > 0) return mixtureLogLik(ex, ey, hx, hy);
+        return m_mix.mix(baseLogLikelihoodOffset(ex, ey, hx, hy));
+    }
+    /** The base model alone, without the outlier mixture. */
+    double baseLogLikelihoodOffset(double ex, double ey, double hx, double hy) const {
         return m_p.model == DetectionModel::Step ? m_step.logLik(ex, ey, hx, hy)
                                                  : m_gauss.logLik(ex, ey, hx, hy);
     }
+    /** The outlier mixture applied to a base log-likelihood (identity when
+     * off); also to one already averaged over a tag's samples. */
+    double withOutliers(double baseLogLik) const { return m_mix.mix(baseLogLik); }
     /** Tag at `tag` (world), reader `r` placed by the robot pose `robot` (eq. 6
      * of the PF-SLAM paper), offset rotated into the robot frame. */
     double logLikelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
@@ -73,6 +82,14 @@ class DetectionLikelihood {
                          const ReaderArea& r, const mrpt::math::TPoint2D& tag) const;
     double likelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
                       const mrpt::math::TPoint2D& tag) const;
+    /** logLikelihood without the mixture: the robot's weighing mixes the
+     * sum over a tag's samples, and the kidnap check reads the base terms
+     * (a kidnapping is a drop the mixture would cap). */
+    double baseLogLikelihood(const mrpt::math::TPose2D& robot, double c, double s,
+                             const ReaderArea& r, const mrpt::math::TPoint2D& tag) const {
+        const auto e = readModel(robot, c, s, r.x, r.y, tag);
+        return baseLogLikelihoodOffset(e.x, e.y, r.halfX, r.halfY);
+    }
 
     /** True if the base model (without the mixture) gives this read a
      * log-likelihood below outlierLogFloor: the mixture, at any weight, would
@@ -83,11 +100,10 @@ class DetectionLikelihood {
     const DetectionModelParams& params() const { return m_p; }
 
   private:
-    double mixtureLogLik(double ex, double ey, double hx, double hy) const;
-
     DetectionModelParams m_p;
     CStepReadNoise m_step;
     CGaussianReadNoise m_gauss;
+    COutlierMixture m_mix;
 };
 
 /** World position of a reader's centre for a robot pose (eq. 6 of 003). */

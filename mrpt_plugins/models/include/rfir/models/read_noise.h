@@ -50,26 +50,47 @@ class CGaussianReadNoise {
     double m_k;
 };
 
-/** Outlier mixture over a base model: a share eps of the reads comes from
- * anywhere, with the flat likelihood `floor` (relative to the base model's
- * best, 1): log((1 - eps) L + eps floor). A read far from every particle's
- * tag then costs at most log(eps floor) instead of sinking the particle. */
+/** The outlier mixture on a base log-likelihood a: a share eps of the reads
+ * comes from anywhere, with the flat likelihood `floor` (relative to the base
+ * model's best, 1): log((1 - eps) exp(a) + eps floor). A read far from every
+ * particle's tag then costs at most log(eps floor) instead of sinking the
+ * particle. Linear in the likelihood, so it also applies to a base term
+ * already averaged over a tag's samples. eps = 0: a itself. */
+class COutlierMixture {
+  public:
+    COutlierMixture() = default;  // off
+    COutlierMixture(double eps, double logFloor)
+        : m_on(eps > 0),
+          m_log1mEps(std::log1p(-eps)),
+          m_logEpsFloor(std::log(eps) + logFloor) {}
+    double mix(double a) const {
+        if (!m_on) return a;
+        const double x = m_log1mEps + a, b = m_logEpsFloor;
+        const double hi = std::max(x, b);
+        return hi + std::log(std::exp(x - hi) + std::exp(b - hi));
+    }
+    /** d mix / d a at a, given out = mix(a): the base term's share. */
+    double share(double a, double out) const {
+        return m_on ? std::exp(m_log1mEps + a - out) : 1.0;
+    }
+
+  private:
+    bool m_on = false;
+    double m_log1mEps = 0, m_logEpsFloor = 0;
+};
+
+/** The mixture over a base noise model, with its gradient. */
 template <class BASE>
 class COutlierReadNoise {
   public:
     COutlierReadNoise(const BASE& base, double eps, double logFloor)
-        : m_base(base),
-          m_log1mEps(std::log1p(-eps)),
-          m_logEpsFloor(std::log(eps) + logFloor) {}
+        : m_base(base), m_mix(eps, logFloor) {}
     double logLik(double ex, double ey, double hx, double hy,
                   double* grad = nullptr) const {
-        const double a = m_log1mEps + m_base.logLik(ex, ey, hx, hy, grad);
-        const double b = m_logEpsFloor;
-        const double hi = std::max(a, b);
-        const double out = hi + std::log(std::exp(a - hi) + std::exp(b - hi));
-        // d/de log((1-eps) L + c) = share of the base term * d log L / de.
-        if (grad) {
-            const double w = std::exp(a - out);
+        const double a = m_base.logLik(ex, ey, hx, hy, grad);
+        const double out = m_mix.mix(a);
+        if (grad) {  // d/de log((1-eps) L + c) = share of the base term * d log L / de
+            const double w = m_mix.share(a, out);
             grad[0] *= w, grad[1] *= w;
         }
         return out;
@@ -77,7 +98,7 @@ class COutlierReadNoise {
 
   private:
     BASE m_base;
-    double m_log1mEps, m_logEpsFloor;
+    COutlierMixture m_mix;
 };
 
 }  // namespace rfir::models

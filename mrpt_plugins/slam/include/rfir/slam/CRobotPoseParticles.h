@@ -54,6 +54,10 @@ class CRobotPoseParticles
      * @{ */
     const std::vector<double>& stepLogLik() const { return m_stepLogLik; }
     double stepLogEvidence() const;
+    /** The evidence of other per-particle terms under this step's prior
+     * weights (log_w before the weighing): e.g. the weighing without its
+     * outlier mixture. terms.size() must be the particle count. */
+    double stepLogEvidence(const std::vector<double>& terms) const;
     /** @} */
 
     /** Replaces particle i's pose, giving it the current best weight (sensor

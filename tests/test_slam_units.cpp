@@ -211,4 +211,16 @@ TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
     EXPECT_FALSE(gap.update(step(1 + o.max_gap + 1, -1000, {"B"})));
     EXPECT_TRUE(gap.update(step(1 + o.max_gap + 2, -1000, {"C"})));
     EXPECT_EQ(m.resets(), 1u);
+    // Ghost reads: every step has one read that contradicts the best particle
+    // badly, but also one it explains; no run of disagreeing steps opens.
+    CKidnapMonitor ghost(o);
+    EXPECT_FALSE(ghost.update(step(0, -0.1, {})));
+    for (int k = 1; k < 20; k++) {
+        auto e = step(k, -500, {"G" + std::to_string(k)});
+        e.reads = 2;
+        e.agreeing = 1;
+        EXPECT_FALSE(ghost.update(e));
+        EXPECT_FALSE(ghost.suspicious());
+    }
+    EXPECT_EQ(ghost.resets(), 0u);
 }

@@ -68,7 +68,7 @@ bool CKidnapMonitor::update(const TStepEvidence& e) {
     const double slowBefore = first ? e.meanLogEvidence : *slow_;
     slow_ = slowBefore + o_.slow_rate * (e.meanLogEvidence - slowBefore);
     if (bad_ > 0 && e.t - lastBad_ > o_.max_gap) endRun();
-    if (e.bestMeanLogLik >= o_.collapse_loglik) {
+    if (e.bestMeanLogLik >= o_.collapse_loglik || e.agreeing > 0) {
         endRun();  // some particle explains the reads: not lost
         return false;
     }

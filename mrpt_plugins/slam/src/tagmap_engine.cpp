@@ -176,7 +176,10 @@ TStepEvidence CTagMapEngine::stepEvidence() const {
             one.reads.assign(1, rd);
             double b = 0;
             map_.robotReadsLogLikelihood(one, pose, p.phi_cos(), p.phi_sin(), &b);
-            if (b < cfg_.kidnap.collapse_loglik && rd.id) e.disagreeing.push_back(*rd.id);
+            if (b >= cfg_.kidnap.collapse_loglik)
+                e.agreeing++;
+            else if (rd.id)
+                e.disagreeing.push_back(*rd.id);
         }
     }
     return e;

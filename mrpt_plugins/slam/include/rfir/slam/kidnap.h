@@ -3,7 +3,7 @@
  * (the same per-particle log-likelihoods that weigh the particles, from the
  * reads the map's robot-update policy picks): a step disagrees when even the
  * best particle explains its reads badly (mean log-likelihood per read below
- * `collapse_loglik`). One such step is normal (a drifted filter meeting a
+ * `collapse_loglik`, and not one of them within it). One such step is normal (a drifted filter meeting a
  * revisited tag is corrected by that very weighing); a kidnapping is a run
  * of disagreeing steps, with no agreeing step between them, over several
  * distinct known landmarks, while the short-term average of the step
@@ -63,6 +63,10 @@ struct TStepEvidence {
     double bestMeanLogLik = 0;   //!< best particle, per read
     double meanLogEvidence = 0;  //!< log of the weighted mean likelihood, per read
     std::vector<std::string> disagreeing;  //!< landmarks the best particle contradicts
+    /** Reads the best particle explains (base term >= collapse_loglik): one
+     * such read ends a run, so that a ghost read next to good ones is not
+     * taken for a kidnapping (a kidnapped robot's reads all disagree). */
+    size_t agreeing = 0;
 };
 
 class CKidnapMonitor {

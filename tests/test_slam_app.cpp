@@ -213,11 +213,11 @@ TEST(SlamApp, OutputsBelongToOneRun) {
     const std::string stats = slurp(out + "/stats.json");
     EXPECT_NE(stats.find("\"seed\": 2"), std::string::npos) << stats;
     EXPECT_EQ(stats.find("\"smoother\""), std::string::npos) << stats;  // not smoothed
-    EXPECT_NE(stats.find("\"ini_md5\": \""), std::string::npos) << stats;
+    EXPECT_NE(stats.find("\"ini_md5\":\""), std::string::npos) << stats;
     EXPECT_NE(stats.find("--seed 2"), std::string::npos) << stats;
-    EXPECT_NE(stats.find("\"files\": [\"error_time.png\", \"errors.json\", \"map.txt\", "
-                         "\"path.tum\", \"path_map.png\", \"scene.3Dscene\", "
-                         "\"settings.ini\", \"stats.json\"]"),
+    EXPECT_NE(stats.find("\"files\":[\"error_time.png\",\"errors.json\",\"map.txt\","
+                         "\"path.tum\",\"path_map.png\",\"scene.3Dscene\","
+                         "\"settings.ini\",\"stats.json\"]"),
               std::string::npos)
         << stats;
     EXPECT_NE(

@@ -1,3 +1,4 @@
+#include <rfir/common/json_text.h>
 #include <rfir/eval/report.h>
 
 #include <algorithm>
@@ -181,21 +182,6 @@ std::string formatErrorTable(const std::vector<TEvalResult>& rows,
 }
 
 namespace {
-std::string jsonString(const std::string& s) {
-    std::string o = "\"";
-    for (unsigned char c : s) {
-        if (c == '"' || c == '\\')
-            o += '\\', o += char(c);
-        else if (c < 0x20) {
-            char b[8];
-            std::snprintf(b, sizeof(b), "\\u%04x", c);
-            o += b;
-        } else
-            o += char(c);
-    }
-    return o + "\"";
-}
-
 std::string jsonNum(double v) {
     if (!std::isfinite(v)) return "null";
     char b[64];
@@ -288,7 +274,7 @@ std::string mapJson(const TMapErrors& m) {
 }  // namespace
 
 std::string toJson(const TEvalResult& r) {
-    std::string o = "{\"label\":" + jsonString(r.label);
+    std::string o = "{\"label\":" + rfir::common::jsonString(r.label);
     if (r.robot) o += ",\"robot\":" + robotJson(*r.robot);
     if (r.odometry) o += ",\"dead_reckoning\":" + robotJson(*r.odometry);
     if (r.map) o += "," + mapJson(*r.map);

@@ -3,6 +3,7 @@
 #include <rfir/localize/localize_output.h>
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/json_text.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/output_set.h>
 #include <rfir/eval/metrics.h>
@@ -69,8 +70,8 @@ std::string lostJson(const TRunResult& res) {
     o << std::setprecision(10) << "[";
     for (size_t i = 0; i < res.lost.size(); i++) {
         const auto& l = res.lost[i];
-        o << (i ? ", " : "") << "{\"t\": " << l.t << ", \"emitter\": \"" << l.id
-          << "\", \"recovered_t\": ";
+        o << (i ? ", " : "") << "{\"t\": " << l.t
+          << ", \"emitter\": " << rfir::common::jsonString(l.id) << ", \"recovered_t\": ";
         if (l.settled)
             o << *l.settled;
         else
@@ -86,7 +87,8 @@ std::string idsJson(const TConfig& cfg, const TRunResult& res, S status) {
     const auto& em = cfg.map->emitters().emitters();
     for (size_t i = 0; i < res.emitterHealth.size() && i < em.size(); i++)
         if (res.emitterHealth[i].status == status)
-            o += std::string(o.size() > 1 ? ", " : "") + "\"" + em[i].id + "\"";
+            o += std::string(o.size() > 1 ? ", " : "") +
+                 rfir::common::jsonString(em[i].id);
     return o + "]";
 }
 
@@ -117,8 +119,8 @@ std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& e
                       const std::string& identity) {
     std::ostringstream o;
     o << std::setprecision(10) << "{\n"
-      << "  \"rawlog\": \"" << cfg.rawlogPath << "\",\n"
-      << "  \"emitters\": \"" << cfg.emitterPath << "\",\n"
+      << "  \"rawlog\": " << rfir::common::jsonString(cfg.rawlogPath) << ",\n"
+      << "  \"emitters\": " << rfir::common::jsonString(cfg.emitterPath) << ",\n"
       << "  \"mode\": \"" << (cfg.odometryOnly ? "odometry-only" : "monte-carlo")
       << "\",\n"
       << "  \"seed\": " << cfg.seed << ",\n"
@@ -144,7 +146,7 @@ std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& e
       << "  \"lost_events\": " << lostJson(res) << ",\n"
       << "  \"emitters_failed\": " << idsJson(cfg, res, S::Failed) << ",\n"
       << "  \"emitters_inconsistent\": " << idsJson(cfg, res, S::Inconsistent) << ",\n"
-      << "  \"odometry_start\": \"" << res.odometryStart << "\",\n"
+      << "  \"odometry_start\": " << rfir::common::jsonString(res.odometryStart) << ",\n"
       << "  \"filter_seconds\": " << res.seconds << ",\n  \"run\": " << identity;
     for (size_t i = 0; i < ev.rows.size(); i++)
         o << ",\n  \"" << (i == 0 ? "path_errors" : "spot_errors")

@@ -1,8 +1,9 @@
 /* rfir: the outputs of one run, staged and renamed into place. */
 #include <rfir/common/output_set.h>
 
+#include <rfir/common/json.h>
+
 #include <mrpt/system/md5.h>
-#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <fnmatch.h>
@@ -207,15 +208,14 @@ std::string rfirVersion() {
 
 std::string runIdentityJson(uint64_t seed, const std::string& iniPath,
                             const std::vector<std::string>& files) {
-    nlohmann::ordered_json j;
+    TJson j;
     j["command"] = processCommandLine();
     j["version"] = rfirVersion();
     j["seed"] = seed;
     j["ini"] = iniPath;
     j["ini_md5"] = fileMD5(iniPath);
     j["files"] = files;
-    // Paths and arguments are bytes: invalid UTF-8 becomes U+FFFD, not a throw.
-    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return dumpJson(j);
 }
 
 }  // namespace rfir::common

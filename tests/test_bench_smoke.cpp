@@ -4,8 +4,11 @@
 
 #include "test_tmpdir.h"
 
+#include <nlohmann/json.hpp>
+
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -77,36 +80,58 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
 
     const std::string js = slurp(dir + "/b.json");
     ASSERT_FALSE(js.empty());
-    EXPECT_EQ(count(js, "\"method\": \"ps\""), 5u) << js;
-    EXPECT_EQ(count(js, "\"method\": \"pf\""), 5u);
-    EXPECT_EQ(count(js, "\"method\": \"fastslam\""), 5u);
-    EXPECT_EQ(count(js, "\"skipped\": false"), 9u);
-    EXPECT_EQ(count(js, "\"median_us\": "), 9u + 2u);  // cases + floor at M = 100, 500
-    EXPECT_EQ(count(js, "\"state_bytes\": "), 9u);
-    EXPECT_EQ(count(js, "\"result\": "), 10u);
-    EXPECT_EQ(count(js, "\"plain_us_per_step\": "), 1u);
-    // The plain reference maps every tag read, as the engines do.
-    const auto num = [&](const std::string& key) {
-        const size_t at = js.find("\"" + key + "\": ");
-        return at == std::string::npos ? -1L : std::stol(js.substr(at + key.size() + 4));
+    const auto j = nlohmann::json::parse(js);
+    std::vector<nlohmann::json> cases;
+    for (const char* sweep : {"sweep_M", "sweep_N"})
+        for (const auto& c : j.at(sweep)) cases.push_back(c);
+    for (const auto& x : j.at("realtime")) cases.push_back(x);
+    const auto methods = [&](const std::string& m) {
+        return std::count_if(cases.begin(), cases.end(),
+                             [&](const auto& c) { return c.at("method") == m; });
     };
-    EXPECT_GT(num("plain_tags"), 0);
-    EXPECT_EQ(num("plain_tags"), num("ps_tags"));
-    EXPECT_EQ(num("plain_tags"), num("pf_tags"));
-    EXPECT_EQ(count(js, "\"x_realtime\": "), 6u);
+    EXPECT_EQ(methods("ps"), 5) << js;
+    EXPECT_EQ(methods("pf"), 5);
+    EXPECT_EQ(methods("fastslam"), 5);
+    size_t run = 0, floorOrCase = j.at("floor").size();
+    for (const char* sweep : {"sweep_M", "sweep_N"})
+        for (const auto& c : j.at(sweep))
+            if (!c.at("skipped").get<bool>()) {
+                run++;
+                floorOrCase += c.contains("median_us");
+                EXPECT_TRUE(c.contains("state_bytes")) << c;
+            }
+    EXPECT_EQ(run, 9u);
+    EXPECT_EQ(floorOrCase, 9u + 2u);  // cases + floor at M = 100, 500
+    ASSERT_EQ(j.at("targets").size(), 10u);
+    for (const auto& t : j.at("targets")) EXPECT_TRUE(t.contains("result")) << t;
+    ASSERT_EQ(j.at("plain_reference").size(), 1u);
+    // The plain reference maps every tag read, as the engines do.
+    const auto& plain = j.at("plain_reference")[0];
+    EXPECT_TRUE(plain.contains("plain_us_per_step"));
+    EXPECT_GT(plain.at("plain_tags").get<long>(), 0);
+    EXPECT_EQ(plain.at("plain_tags"), plain.at("ps_tags"));
+    EXPECT_EQ(plain.at("plain_tags"), plain.at("pf_tags"));
+    EXPECT_EQ(j.at("realtime").size(), 6u);
+    for (const auto& x : j.at("realtime")) EXPECT_TRUE(x.contains("x_realtime")) << x;
     // Two whole rfir-slam processes (the floor, the 300 mm log), each more
     // than its binary's start-up alone.
-    EXPECT_EQ(count(js, "\"cpu_seconds\": "), 2u) << js;
-    const auto real = [&](const std::string& key) {
-        const size_t at = js.find("\"" + key + "\": ");
-        return at == std::string::npos ? -1.0 : std::stod(js.substr(at + key.size() + 4));
-    };
-    EXPECT_GT(real("startup_cpu_seconds"), 0.0);
-    EXPECT_GT(real("cpu_seconds"), real("startup_cpu_seconds"));
+    ASSERT_EQ(j.at("process").size(), 2u) << js;
+    for (const auto& p : j.at("process")) {
+        EXPECT_GT(p.at("startup_cpu_seconds").get<double>(), 0.0) << p;
+        EXPECT_GT(p.at("cpu_seconds").get<double>(),
+                  p.at("startup_cpu_seconds").get<double>())
+            << p;
+    }
     // Every case mapped the tags it was built with (N, or N = 10 / 100).
-    EXPECT_EQ(count(js, "\"landmarks\": 10}"), 3u) << js;
-    EXPECT_EQ(count(js, "\"landmarks\": 100}"), 3u);
-    EXPECT_EQ(js.find("nan"), std::string::npos);
+    size_t mapped10 = 0, mapped100 = 0;
+    for (const auto& c : cases)
+        if (c.contains("landmarks")) {
+            mapped10 += c.at("landmarks") == 10;
+            mapped100 += c.at("landmarks") == 100;
+        }
+    EXPECT_EQ(mapped10, 3u) << js;
+    EXPECT_EQ(mapped100, 3u);
+    EXPECT_EQ(js.find("null"), std::string::npos);  // every number finite
     for (const char* png :
          {"bench_time_vs_M.png", "bench_time_vs_N.png", "bench_memory_vs_N.png"})
         EXPECT_GT(fileSize(dir + "/" + png), 1000) << png;

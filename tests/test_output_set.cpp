@@ -85,8 +85,8 @@ TEST(OutputSet, RunIdentity) {
     std::ofstream(t.p / "a.ini") << "[s]\nk = 1\n";
     const std::string j =
         rfir::common::runIdentityJson(7, (t.p / "a.ini").string(), {"x\"y", "z"});
-    EXPECT_NE(j.find("\"seed\": 7"), std::string::npos) << j;
-    EXPECT_NE(j.find("\"files\": [\"x\\\"y\", \"z\"]"), std::string::npos) << j;
+    EXPECT_NE(j.find("\"seed\":7"), std::string::npos) << j;
+    EXPECT_NE(j.find("\"files\":[\"x\\\"y\",\"z\"]"), std::string::npos) << j;
     EXPECT_NE(j.find("test_output_set"), std::string::npos) << j;  // the command
     EXPECT_EQ(rfir::common::fileMD5((t.p / "a.ini").string()).size(), 32u);
 }

@@ -1,6 +1,7 @@
 /* rfir-bench: the table (stdout), the JSON file and the PNG plots. */
 #include <rfir/bench/bench.h>
 
+#include <rfir/common/json.h>
 #include <rfir/eval/plot.h>
 
 #include <cmath>
@@ -56,28 +57,82 @@ void printCases(const char* title, const std::vector<TCaseResult>& v, std::ostre
     out << "\n";
 }
 
-void jsonCase(std::ostringstream& o, const TCaseResult& c) {
-    o << "{\"method\": \"" << c.method << "\", \"M\": " << c.M << ", \"N\": " << c.N;
-    if (c.skipped) {
-        o << ", \"skipped\": true, \"reason\": \"" << c.skipReason << "\"}";
-        return;
-    }
-    o << ", \"skipped\": false, \"updates\": " << c.updates
-      << ", \"median_us\": " << c.medianUs << ", \"p90_us\": " << c.p90Us
-      << ", \"mean_us\": " << c.meanUs << ", \"wall_median_us\": " << c.wallMedianUs
-      << ", \"x_floor\": " << c.floorRatio << ", \"x_ps\": " << c.vsPsRatio
-      << ", \"state_bytes\": " << c.stateBytes << ", \"peak_bytes\": " << c.peakBytes
-      << ", \"build_s\": " << c.buildSeconds << ", \"landmarks\": " << c.tagsMapped
-      << "}";
+using rfir::common::TJson;
+// The benchmark's numbers are written with 6 significant digits.
+TJson p6(double v) {
+    return rfir::common::printed(v, "%.6g");
 }
 
-std::string jsonEscape(const std::string& s) {
-    std::string r;
-    for (char ch : s) {
-        if (ch == '"' || ch == '\\') r += '\\';
-        r += ch;
+TJson caseJson(const TCaseResult& c) {
+    TJson j;
+    j["method"] = c.method;
+    j["M"] = c.M;
+    j["N"] = c.N;
+    j["skipped"] = c.skipped;
+    if (c.skipped) {
+        j["reason"] = c.skipReason;
+        return j;
     }
-    return r;
+    j["updates"] = c.updates;
+    j["median_us"] = p6(c.medianUs);
+    j["p90_us"] = p6(c.p90Us);
+    j["mean_us"] = p6(c.meanUs);
+    j["wall_median_us"] = p6(c.wallMedianUs);
+    j["x_floor"] = p6(c.floorRatio);
+    j["x_ps"] = p6(c.vsPsRatio);
+    j["state_bytes"] = c.stateBytes;
+    j["peak_bytes"] = c.peakBytes;
+    j["build_s"] = p6(c.buildSeconds);
+    j["landmarks"] = c.tagsMapped;
+    return j;
+}
+
+TJson realtimeJson(const TRealtimeResult& x) {
+    TJson j;
+    j["method"] = x.method;
+    j["M"] = x.M;
+    j["robot_seconds"] = p6(x.simSeconds);
+    j["steps"] = x.steps;
+    j["tags_in_world"] = x.tagsInWorld;
+    j["tags_mapped"] = x.tagsMapped;
+    j["reads"] = x.detections;
+    j["slam_seconds"] = p6(x.slamSeconds);
+    j["slam_wall_seconds"] = p6(x.slamWallSeconds);
+    j["x_realtime"] = p6(x.speedup);
+    j["plain_reference_s"] = p6(x.plainSeconds);
+    return j;
+}
+
+TJson plainJson(const TPlainCompare& p) {
+    TJson j;
+    j["log"] = p.log;
+    j["M"] = p.M;
+    j["steps"] = p.steps;
+    j["plain_us_per_step"] = p6(p.plainUs);
+    j["plain_tags"] = p.plainTags;
+    for (size_t k = 0; k < p.methods.size(); k++) {
+        j[p.methods[k] + "_us_per_step"] = p6(p.engineUs[k]);
+        j[p.methods[k] + "_tags"] = p.engineTags[k];
+    }
+    return j;
+}
+
+TJson processJson(const TProcessRun& p) {
+    TJson j;
+    j["log"] = p.log;
+    j["M"] = p.M;
+    j["robot_seconds"] = p6(p.robotSeconds);
+    j["cpu_seconds"] = p6(p.cpuSeconds);
+    j["wall_seconds"] = p6(p.wallSeconds);
+    j["startup_cpu_seconds"] = p6(p.startupCpuSeconds);
+    return j;
+}
+
+template <class T, class F>
+TJson arrayOf(const std::vector<T>& v, F f) {
+    TJson a = TJson::array();
+    for (const auto& x : v) a.push_back(f(x));
+    return a;
 }
 }  // namespace
 
@@ -144,77 +199,38 @@ void printPlain(const TBenchReport& r, std::ostream& out) {
 }
 
 std::string toJson(const TBenchReport& r) {
-    std::ostringstream o;
-    o << std::setprecision(6) << "{\n  \"host\": \"" << jsonEscape(r.host)
-      << "\",\n  \"seed\": " << r.options.seed
-      << ",\n  \"quick\": " << (r.options.quick ? "true" : "false")
-      << ",\n  \"timed_updates\": " << r.options.timedUpdates
-      << ",\n  \"rounds\": " << r.options.rounds << ",\n  \"ini_edits\": [";
-    for (size_t i = 0; i < r.options.sets.size(); i++)
-        o << (i ? ", " : "") << "\"" << jsonEscape(r.options.sets[i]) << "\"";
-    o << "]"
-      << ",\n  \"time_measure\": \"thread CPU time per update\""
-      << ",\n  \"load_before\": " << r.loadBefore
-      << ",\n  \"load_after\": " << r.loadAfter
-      << ",\n  \"memory_measure\": \"glibc mallinfo2 heap in use\""
-      << ",\n  \"floor\": [";
-    for (size_t i = 0; i < r.floor.size(); i++)
-        o << (i ? ", " : "") << "{\"M\": " << r.floor[i].M
-          << ", \"median_us\": " << r.floor[i].medianUs
-          << ", \"mean_us\": " << r.floor[i].meanUs
-          << ", \"wall_median_us\": " << r.floor[i].wallMedianUs << "}";
-    const std::pair<const char*, const std::vector<TCaseResult>*> sweeps[] = {
-        {"sweep_M", &r.sweepM}, {"sweep_N", &r.sweepN}};
-    for (const auto& [name, v] : sweeps) {
-        o << "],\n  \"" << name << "\": [";
-        for (size_t i = 0; i < v->size(); i++) {
-            o << (i ? ",\n    " : "\n    ");
-            jsonCase(o, (*v)[i]);
-        }
-    }
-    o << "],\n  \"realtime\": [";
-    for (size_t i = 0; i < r.realtime.size(); i++) {
-        const auto& x = r.realtime[i];
-        o << (i ? ", " : "") << "{\"method\": \"" << x.method << "\", \"M\": " << x.M
-          << ", \"robot_seconds\": " << x.simSeconds << ", \"steps\": " << x.steps
-          << ", \"tags_in_world\": " << x.tagsInWorld
-          << ", \"tags_mapped\": " << x.tagsMapped << ", \"reads\": " << x.detections
-          << ", \"slam_seconds\": " << x.slamSeconds
-          << ", \"slam_wall_seconds\": " << x.slamWallSeconds
-          << ", \"x_realtime\": " << x.speedup
-          << ", \"plain_reference_s\": " << x.plainSeconds << "}";
-    }
-    o << "],\n  \"plain_reference\": [";
-    for (size_t i = 0; i < r.plain.size(); i++) {
-        const auto& p = r.plain[i];
-        o << (i ? ", " : "") << "{\"log\": \"" << jsonEscape(p.log)
-          << "\", \"M\": " << p.M << ", \"steps\": " << p.steps
-          << ", \"plain_us_per_step\": " << p.plainUs
-          << ", \"plain_tags\": " << p.plainTags;
-        for (size_t k = 0; k < p.methods.size(); k++)
-            o << ", \"" << p.methods[k] << "_us_per_step\": " << p.engineUs[k] << ", \""
-              << p.methods[k] << "_tags\": " << p.engineTags[k];
-        o << "}";
-    }
-    o << "],\n  \"process\": [";
-    for (size_t i = 0; i < r.process.size(); i++) {
-        const auto& p = r.process[i];
-        o << (i ? ", " : "") << "{\"log\": \"" << jsonEscape(p.log)
-          << "\", \"M\": " << p.M << ", \"robot_seconds\": " << p.robotSeconds
-          << ", \"cpu_seconds\": " << p.cpuSeconds
-          << ", \"wall_seconds\": " << p.wallSeconds
-          << ", \"startup_cpu_seconds\": " << p.startupCpuSeconds << "}";
-    }
-    o << "],\n  \"targets\": [";
-    for (size_t i = 0; i < r.targets.size(); i++) {
-        const auto& t = r.targets[i];
-        o << (i ? "," : "") << "\n    {\"name\": \"" << jsonEscape(t.name)
-          << "\", \"result\": \""
-          << (t.measured ? (t.pass ? "pass" : "fail") : "not measured")
-          << "\", \"detail\": \"" << jsonEscape(t.detail) << "\"}";
-    }
-    o << "]\n}\n";
-    return o.str();
+    TJson j;
+    j["host"] = r.host;
+    j["seed"] = r.options.seed;
+    j["quick"] = r.options.quick;
+    j["timed_updates"] = r.options.timedUpdates;
+    j["rounds"] = r.options.rounds;
+    j["ini_edits"] = r.options.sets;
+    j["time_measure"] = "thread CPU time per update";
+    j["load_before"] = p6(r.loadBefore);
+    j["load_after"] = p6(r.loadAfter);
+    j["memory_measure"] = "glibc mallinfo2 heap in use";
+    j["floor"] = arrayOf(r.floor, [](const TFloorResult& f) {
+        TJson e;
+        e["M"] = f.M;
+        e["median_us"] = p6(f.medianUs);
+        e["mean_us"] = p6(f.meanUs);
+        e["wall_median_us"] = p6(f.wallMedianUs);
+        return e;
+    });
+    j["sweep_M"] = arrayOf(r.sweepM, caseJson);
+    j["sweep_N"] = arrayOf(r.sweepN, caseJson);
+    j["realtime"] = arrayOf(r.realtime, realtimeJson);
+    j["plain_reference"] = arrayOf(r.plain, plainJson);
+    j["process"] = arrayOf(r.process, processJson);
+    j["targets"] = arrayOf(r.targets, [](const TTarget& t) {
+        TJson e;
+        e["name"] = t.name;
+        e["result"] = t.measured ? (t.pass ? "pass" : "fail") : "not measured";
+        e["detail"] = t.detail;
+        return e;
+    });
+    return rfir::common::dumpJson(j) + "\n";
 }
 
 /** One series per method: median time (or state memory) against M or N. */

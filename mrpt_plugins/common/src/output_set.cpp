@@ -1,6 +1,8 @@
 /* rfir: the outputs of one run, staged and renamed into place. */
 #include <rfir/common/output_set.h>
 
+#include <rfir/common/json.h>
+
 #include <mrpt/system/md5.h>
 
 #include <fcntl.h>
@@ -50,21 +52,6 @@ std::string recordName(std::vector<std::string>& files, const std::string& dir,
 std::vector<std::string> sorted(std::vector<std::string> v) {
     std::sort(v.begin(), v.end());
     return v;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string o = "\"";
-    for (const unsigned char c : s) {
-        if (c == '"' || c == '\\')
-            o += '\\', o += char(c);
-        else if (c < 0x20) {
-            char b[8];
-            std::snprintf(b, sizeof b, "\\u%04x", c);
-            o += b;
-        } else
-            o += char(c);
-    }
-    return o + "\"";
 }
 }  // namespace
 
@@ -221,15 +208,14 @@ std::string rfirVersion() {
 
 std::string runIdentityJson(uint64_t seed, const std::string& iniPath,
                             const std::vector<std::string>& files) {
-    std::ostringstream o;
-    o << "{\"command\": " << jsonString(processCommandLine())
-      << ", \"version\": " << jsonString(rfirVersion()) << ", \"seed\": " << seed
-      << ", \"ini\": " << jsonString(iniPath)
-      << ", \"ini_md5\": " << jsonString(fileMD5(iniPath)) << ", \"files\": [";
-    for (size_t i = 0; i < files.size(); i++)
-        o << (i ? ", " : "") << jsonString(files[i]);
-    o << "]}";
-    return o.str();
+    TJson j;
+    j["command"] = processCommandLine();
+    j["version"] = rfirVersion();
+    j["seed"] = seed;
+    j["ini"] = iniPath;
+    j["ini_md5"] = fileMD5(iniPath);
+    j["files"] = files;
+    return dumpJson(j);
 }
 
 }  // namespace rfir::common

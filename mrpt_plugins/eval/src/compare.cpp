@@ -1,5 +1,7 @@
 #include <rfir/eval/compare.h>
 
+#include "report_json.h"
+
 #include <stdexcept>
 
 namespace rfir::eval {
@@ -115,9 +117,11 @@ void plotErrorsOverTime(const std::string& png, const std::vector<TEvalResult>& 
 }
 
 std::string toJsonRuns(const std::vector<TEvalResult>& rows) {
-    std::string o = "{\"runs\":[";
-    for (size_t i = 0; i < rows.size(); i++) o += (i ? "," : "") + toJson(rows[i]);
-    return o + "]}";
+    rfir::common::TJson runs = rfir::common::TJson::array();
+    for (const auto& r : rows) runs.push_back(toJsonValue(r));
+    rfir::common::TJson j;
+    j["runs"] = runs;
+    return rfir::common::dumpJson(j);
 }
 
 }  // namespace rfir::eval

@@ -1,5 +1,7 @@
 #include <rfir/eval/report.h>
 
+#include "report_json.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -181,74 +183,55 @@ std::string formatErrorTable(const std::vector<TEvalResult>& rows,
 }
 
 namespace {
-std::string jsonString(const std::string& s) {
-    std::string o = "\"";
-    for (unsigned char c : s) {
-        if (c == '"' || c == '\\')
-            o += '\\', o += char(c);
-        else if (c < 0x20) {
-            char b[8];
-            std::snprintf(b, sizeof(b), "\\u%04x", c);
-            o += b;
-        } else
-            o += char(c);
-    }
-    return o + "\"";
+using rfir::common::printed;
+using rfir::common::TJson;
+
+TJson alignedJson(const TAlignment& a, const TErrorStats& s) {
+    TJson j;
+    j["theta"] = printed(a.theta);
+    j["tx"] = printed(a.tx);
+    j["ty"] = printed(a.ty);
+    j["mean_dist"] = printed(s.mean_dist);
+    j["rmse_dist"] = printed(s.rmse_dist);
+    j["max_dist"] = printed(s.max_dist);
+    j["mean_dtheta"] = printed(s.mean_dtheta);
+    j["rmse_dtheta"] = printed(s.rmse_dtheta);
+    j["max_dtheta"] = printed(s.max_dtheta);
+    return j;
 }
 
-std::string jsonNum(double v) {
-    if (!std::isfinite(v)) return "null";
-    char b[64];
-    std::snprintf(b, sizeof(b), "%.9g", v);
-    return b;
+TJson rpeJson(const TRpeStats& r) {
+    TJson j;
+    j["delta"] = printed(r.delta);
+    j["pairs"] = r.pairs;
+    j["mean_trans"] = printed(r.mean_trans);
+    j["rmse_trans"] = printed(r.rmse_trans);
+    j["max_trans"] = printed(r.max_trans);
+    j["mean_rot"] = printed(r.mean_rot);
+    j["rmse_rot"] = printed(r.rmse_rot);
+    j["max_rot"] = printed(r.max_rot);
+    return j;
 }
 
-std::string alignedJson(const TAlignment& a, const TErrorStats& s) {
-    std::ostringstream o;
-    o << "{\"theta\":" << jsonNum(a.theta) << ",\"tx\":" << jsonNum(a.tx)
-      << ",\"ty\":" << jsonNum(a.ty) << ",\"mean_dist\":" << jsonNum(s.mean_dist)
-      << ",\"rmse_dist\":" << jsonNum(s.rmse_dist)
-      << ",\"max_dist\":" << jsonNum(s.max_dist)
-      << ",\"mean_dtheta\":" << jsonNum(s.mean_dtheta)
-      << ",\"rmse_dtheta\":" << jsonNum(s.rmse_dtheta)
-      << ",\"max_dtheta\":" << jsonNum(s.max_dtheta) << "}";
-    return o.str();
-}
-
-std::string rpeJson(const TRpeStats& r) {
-    std::ostringstream o;
-    o << "{\"delta\":" << jsonNum(r.delta) << ",\"pairs\":" << r.pairs
-      << ",\"mean_trans\":" << jsonNum(r.mean_trans)
-      << ",\"rmse_trans\":" << jsonNum(r.rmse_trans)
-      << ",\"max_trans\":" << jsonNum(r.max_trans)
-      << ",\"mean_rot\":" << jsonNum(r.mean_rot)
-      << ",\"rmse_rot\":" << jsonNum(r.rmse_rot) << ",\"max_rot\":" << jsonNum(r.max_rot)
-      << "}";
-    return o.str();
-}
-
-std::string robotJson(const TRobotErrors& e) {
+TJson robotJson(const TRobotErrors& e) {
     const auto& s = e.stats;
-    std::ostringstream o;
-    o << "{\"poses\":" << s.count << ",\"skipped\":" << e.skipped
-      << ",\"mean_dx\":" << jsonNum(s.mean_dx) << ",\"mean_dy\":" << jsonNum(s.mean_dy)
-      << ",\"mean_dtheta\":" << jsonNum(s.mean_dtheta)
-      << ",\"mean_dist\":" << jsonNum(s.mean_dist) << ",\"max_dx\":" << jsonNum(s.max_dx)
-      << ",\"max_dy\":" << jsonNum(s.max_dy)
-      << ",\"max_dtheta\":" << jsonNum(s.max_dtheta)
-      << ",\"max_dist\":" << jsonNum(s.max_dist)
-      << ",\"rmse_dist\":" << jsonNum(s.rmse_dist)
-      << ",\"rmse_dtheta\":" << jsonNum(s.rmse_dtheta)
-      << ",\"aligned\":" << alignedJson(e.alignment, e.aligned)
-      << ",\"rpe_per_m\":" << rpeJson(e.rpePerMetre)
-      << ",\"rpe_per_s\":" << rpeJson(e.rpePerSecond) << "}";
-    return o.str();
-}
-
-std::string jsonArray(const std::vector<double>& v) {
-    std::string o = "[";
-    for (size_t i = 0; i < v.size(); i++) o += (i ? "," : "") + jsonNum(v[i]);
-    return o + "]";
+    TJson j;
+    j["poses"] = s.count;
+    j["skipped"] = e.skipped;
+    j["mean_dx"] = printed(s.mean_dx);
+    j["mean_dy"] = printed(s.mean_dy);
+    j["mean_dtheta"] = printed(s.mean_dtheta);
+    j["mean_dist"] = printed(s.mean_dist);
+    j["max_dx"] = printed(s.max_dx);
+    j["max_dy"] = printed(s.max_dy);
+    j["max_dtheta"] = printed(s.max_dtheta);
+    j["max_dist"] = printed(s.max_dist);
+    j["rmse_dist"] = printed(s.rmse_dist);
+    j["rmse_dtheta"] = printed(s.rmse_dtheta);
+    j["aligned"] = alignedJson(e.alignment, e.aligned);
+    j["rpe_per_m"] = rpeJson(e.rpePerMetre);
+    j["rpe_per_s"] = rpeJson(e.rpePerSecond);
+    return j;
 }
 
 /** Window means, NaN (null) where a window has no pose. */
@@ -258,42 +241,50 @@ std::vector<double> meanDists(const std::vector<TErrorStats>& v) {
     return o;
 }
 
-std::string segmentsJson(const TEvalResult& r) {
-    std::string o = "\"segments\":{\"t\":" + jsonArray(r.segmentBounds);
+TJson segmentsJson(const TEvalResult& r) {
+    TJson j;
+    j["t"] = printed(r.segmentBounds);
     if (!r.robotSegments.empty())
-        o += ",\"robot_mean_dist\":" + jsonArray(meanDists(r.robotSegments));
+        j["robot_mean_dist"] = printed(meanDists(r.robotSegments));
     if (!r.odometrySegments.empty())
-        o += ",\"dead_reckoning_mean_dist\":" + jsonArray(meanDists(r.odometrySegments));
-    return o + "}";
+        j["dead_reckoning_mean_dist"] = printed(meanDists(r.odometrySegments));
+    return j;
 }
 
-std::string mapJson(const TMapErrors& m) {
+void addMapJson(TJson& j, const TMapErrors& m) {
     const auto& s = m.stats;
     const std::string p = pluralKey(m.kind);
-    auto opt = [](const std::optional<size_t>& v) {
-        return v ? std::to_string(*v) : std::string("null");
-    };
-    std::ostringstream o;
-    o << "\"" << p << "\":{\"count\":" << s.count << ",\"mean_dx\":" << jsonNum(s.mean_dx)
-      << ",\"mean_dy\":" << jsonNum(s.mean_dy)
-      << ",\"mean_dist\":" << jsonNum(s.mean_dist) << ",\"max_dx\":" << jsonNum(s.max_dx)
-      << ",\"max_dy\":" << jsonNum(s.max_dy) << ",\"max_dist\":" << jsonNum(s.max_dist)
-      << ",\"rmse_dist\":" << jsonNum(s.rmse_dist) << "}";
-    o << ",\"" << p << "_mapped\":" << m.mapped << ",\"" << p << "_total\":" << m.total
-      << ",\"" << p << "_unknown_ids\":" << m.unknownIds.size() << ",\"" << p
-      << "_passed_over\":" << opt(m.passedOver) << ",\"" << p
-      << "_mapped_of_passed_over\":" << opt(m.mappedOfPassedOver);
-    return o.str();
+    auto opt = [](const std::optional<size_t>& v) { return v ? TJson(*v) : TJson(); };
+    TJson st;
+    st["count"] = s.count;
+    st["mean_dx"] = printed(s.mean_dx);
+    st["mean_dy"] = printed(s.mean_dy);
+    st["mean_dist"] = printed(s.mean_dist);
+    st["max_dx"] = printed(s.max_dx);
+    st["max_dy"] = printed(s.max_dy);
+    st["max_dist"] = printed(s.max_dist);
+    st["rmse_dist"] = printed(s.rmse_dist);
+    j[p] = st;
+    j[p + "_mapped"] = m.mapped;
+    j[p + "_total"] = m.total;
+    j[p + "_unknown_ids"] = m.unknownIds.size();
+    j[p + "_passed_over"] = opt(m.passedOver);
+    j[p + "_mapped_of_passed_over"] = opt(m.mappedOfPassedOver);
 }
 }  // namespace
 
+TJson toJsonValue(const TEvalResult& r) {
+    TJson j;
+    j["label"] = r.label;
+    if (r.robot) j["robot"] = robotJson(*r.robot);
+    if (r.odometry) j["dead_reckoning"] = robotJson(*r.odometry);
+    if (r.map) addMapJson(j, *r.map);
+    if (!r.segmentBounds.empty()) j["segments"] = segmentsJson(r);
+    return j;
+}
+
 std::string toJson(const TEvalResult& r) {
-    std::string o = "{\"label\":" + jsonString(r.label);
-    if (r.robot) o += ",\"robot\":" + robotJson(*r.robot);
-    if (r.odometry) o += ",\"dead_reckoning\":" + robotJson(*r.odometry);
-    if (r.map) o += "," + mapJson(*r.map);
-    if (!r.segmentBounds.empty()) o += "," + segmentsJson(r);
-    return o + "}";
+    return rfir::common::dumpJson(toJsonValue(r));
 }
 
 }  // namespace rfir::eval

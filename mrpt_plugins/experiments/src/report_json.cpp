@@ -2,81 +2,78 @@
 #include <rfir/experiments/report.h>
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/json.h>
 
 #include <cmath>
 #include <ostream>
-#include <sstream>
 
 namespace rfir::experiments {
 namespace {
-std::string q(const std::string& s) {
-    std::string o = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') o += '\\';
-        o += c;
+using rfir::common::printed;
+using rfir::common::TJson;
+
+TJson runJson(const TRow& row, const TRunResult& r) {
+    TJson j;
+    j["point"] = row.points[r.point].label;
+    j["x"] = printed(row.points[r.point].x);
+    j["run"] = row.runs[r.run].label;
+    j["method"] = r.method;
+    j["seed"] = r.seed;
+    j["steps"] = r.steps;
+    j["ms_per_step"] = printed(r.msPerStep);
+    j["max_step_ms"] = printed(r.maxStepMs);
+    j["total_s"] = printed(r.totalSeconds);
+    j["resets"] = r.resets;
+    if (std::isfinite(r.beforeKidnap) || std::isfinite(r.afterKidnap)) {
+        j["before_kidnap_mean_dist"] = printed(r.beforeKidnap);
+        j["after_kidnap_mean_dist"] = printed(r.afterKidnap);
+        j["recovery_time"] = printed(r.recoveryTime);
     }
-    return o + "\"";
-}
-std::string n(double v) {
-    if (!std::isfinite(v)) return "null";
-    std::ostringstream o;
-    o.precision(9);
-    o << v;
-    return o.str();
+    j["errors"] = TJson::parse(rfir::eval::toJson(r.eval));  // as errors.json has it
+    return j;
 }
 
-void writeRun(std::ostream& o, const TRow& row, const TRunResult& r) {
-    o << "{\"point\":" << q(row.points[r.point].label)
-      << ",\"x\":" << n(row.points[r.point].x) << ",\"run\":" << q(row.runs[r.run].label)
-      << ",\"method\":" << q(r.method) << ",\"seed\":" << r.seed
-      << ",\"steps\":" << r.steps << ",\"ms_per_step\":" << n(r.msPerStep)
-      << ",\"max_step_ms\":" << n(r.maxStepMs) << ",\"total_s\":" << n(r.totalSeconds)
-      << ",\"resets\":" << r.resets;
-    if (std::isfinite(r.beforeKidnap) || std::isfinite(r.afterKidnap))
-        o << ",\"before_kidnap_mean_dist\":" << n(r.beforeKidnap)
-          << ",\"after_kidnap_mean_dist\":" << n(r.afterKidnap)
-          << ",\"recovery_time\":" << n(r.recoveryTime);
-    o << ",\"errors\":" << rfir::eval::toJson(r.eval) << "}";
-}
-
-void writeRow(std::ostream& o, const TRowResults& rr) {
+TJson rowJson(const TRowResults& rr) {
     const TRow& row = rr.row;
-    o << "{\"id\":" << q(row.id) << ",\"title\":" << q(row.title)
-      << ",\"source\":" << q(row.source) << ",\"seed_claim\":" << q(row.seedClaim)
-      << ",\"seed_numbers_mm\":[";
-    for (size_t i = 0; i < row.seedNumbers.size(); i++) {
-        const auto& s = row.seedNumbers[i];
-        o << (i ? "," : "") << "{\"method\":" << q(s.label) << ",\"x\":" << n(s.x)
-          << ",\"y\":" << n(s.y) << ",\"theta_rad\":" << n(s.theta)
-          << ",\"dr\":" << n(s.dr) << ",\"tx\":" << n(s.tx) << ",\"ty\":" << n(s.ty)
-          << ",\"dt\":" << n(s.dt) << ",\"note\":" << q(s.note) << "}";
+    TJson j;
+    j["id"] = row.id;
+    j["title"] = row.title;
+    j["source"] = row.source;
+    j["seed_claim"] = row.seedClaim;
+    TJson seeds = TJson::array();
+    for (const auto& s : row.seedNumbers) {
+        TJson e;
+        e["method"] = s.label;
+        e["x"] = printed(s.x);
+        e["y"] = printed(s.y);
+        e["theta_rad"] = printed(s.theta);
+        e["dr"] = printed(s.dr);
+        e["tx"] = printed(s.tx);
+        e["ty"] = printed(s.ty);
+        e["dt"] = printed(s.dt);
+        e["note"] = s.note;
+        seeds.push_back(e);
     }
-    o << "],\"runs\":[\n";
-    for (size_t i = 0; i < rr.runs.size(); i++) {
-        o << (i ? ",\n" : "");
-        writeRun(o, row, rr.runs[i]);
-    }
-    o << "\n]}";
+    j["seed_numbers_mm"] = seeds;
+    j["runs"] = TJson::array();
+    for (const auto& r : rr.runs) j["runs"].push_back(runJson(row, r));
+    return j;
 }
 }  // namespace
 
 void writeJson(const std::string& path, const std::vector<TRowResults>& rows,
                const TMeta& meta) {
-    rfir::common::writeFileAtomically(path, [&](std::ostream& o) {
-        o << "{\"generator\":\"rfir-experiments\",\"command\":" << q(meta.commandLine)
-          << ",\"quick\":" << (meta.quick ? "true" : "false") << ",\"seeds\":[";
-        for (size_t i = 0; i < meta.seeds.size(); i++)
-            o << (i ? "," : "") << meta.seeds[i];
-        o << "],\"ini_edits\":[";
-        for (size_t i = 0; i < meta.sets.size(); i++)
-            o << (i ? "," : "") << q(meta.sets[i]);
-        o << "],\"wall_seconds\":" << n(meta.wallSeconds) << ",\"rows\":[\n";
-        for (size_t i = 0; i < rows.size(); i++) {
-            o << (i ? ",\n" : "");
-            writeRow(o, rows[i]);
-        }
-        o << "\n]}\n";
-    });
+    TJson j;
+    j["generator"] = "rfir-experiments";
+    j["command"] = meta.commandLine;
+    j["quick"] = meta.quick;
+    j["seeds"] = meta.seeds;
+    j["ini_edits"] = meta.sets;
+    j["wall_seconds"] = printed(meta.wallSeconds);
+    j["rows"] = TJson::array();
+    for (const auto& r : rows) j["rows"].push_back(rowJson(r));
+    rfir::common::writeFileAtomically(
+        path, [&](std::ostream& o) { o << rfir::common::dumpJson(j) << "\n"; });
 }
 
 }  // namespace rfir::experiments

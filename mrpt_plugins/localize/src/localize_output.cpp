@@ -3,6 +3,7 @@
 #include <rfir/localize/localize_output.h>
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/json.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/output_set.h>
 #include <rfir/eval/metrics.h>
@@ -64,30 +65,27 @@ TEvals evaluate(const TConfig& cfg, const TRunResult& res) {
 
 using S = rfir::ir::TEmitterHealth::Status;
 
-std::string lostJson(const TRunResult& res) {
-    std::ostringstream o;
-    o << std::setprecision(10) << "[";
-    for (size_t i = 0; i < res.lost.size(); i++) {
-        const auto& l = res.lost[i];
-        o << (i ? ", " : "") << "{\"t\": " << l.t << ", \"emitter\": \"" << l.id
-          << "\", \"recovered_t\": ";
-        if (l.settled)
-            o << *l.settled;
-        else
-            o << "null";
-        o << "}";
+using rfir::common::printed;
+using rfir::common::TJson;
+
+TJson lostJson(const TRunResult& res) {
+    TJson a = TJson::array();
+    for (const auto& l : res.lost) {
+        TJson e;
+        e["t"] = printed(l.t, "%.10g");
+        e["emitter"] = l.id;
+        e["recovered_t"] = l.settled ? printed(*l.settled, "%.10g") : TJson();
+        a.push_back(e);
     }
-    o << "]";
-    return o.str();
+    return a;
 }
 
-std::string idsJson(const TConfig& cfg, const TRunResult& res, S status) {
-    std::string o = "[";
+TJson idsJson(const TConfig& cfg, const TRunResult& res, S status) {
+    TJson a = TJson::array();
     const auto& em = cfg.map->emitters().emitters();
     for (size_t i = 0; i < res.emitterHealth.size() && i < em.size(); i++)
-        if (res.emitterHealth[i].status == status)
-            o += std::string(o.size() > 1 ? ", " : "") + "\"" + em[i].id + "\"";
-    return o + "]";
+        if (res.emitterHealth[i].status == status) a.push_back(em[i].id);
+    return a;
 }
 
 /** One line per emitter of the map: what the localizer made of it. */
@@ -115,42 +113,38 @@ void writeEmitterReport(const TConfig& cfg, const TRunResult& res,
 
 std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
                       const std::string& identity) {
-    std::ostringstream o;
-    o << std::setprecision(10) << "{\n"
-      << "  \"rawlog\": \"" << cfg.rawlogPath << "\",\n"
-      << "  \"emitters\": \"" << cfg.emitterPath << "\",\n"
-      << "  \"mode\": \"" << (cfg.odometryOnly ? "odometry-only" : "monte-carlo")
-      << "\",\n"
-      << "  \"seed\": " << cfg.seed << ",\n"
-      << "  \"num_particles\": " << cfg.params.numParticles << ",\n"
-      << "  \"association\": \""
-      << (cfg.map->likelihoodOptions.association ==
-                  rfir::maps::CIREmitterMap::TAssociation::Estimate
-              ? "estimate"
-              : "particle")
-      << "\",\n"
-      << "  \"instants\": " << res.steps << ",\n"
-      << "  \"ir_observations\": " << res.irObservations << ",\n"
-      << "  \"readings\": " << res.readings << ",\n"
-      << "  \"readings_used\": " << res.used << ",\n"
-      << "  \"unknown_ids\": " << res.unknownIds << ",\n"
-      << "  \"raw_windows_decoded\": " << res.decoded << ",\n"
-      << "  \"first_unique_time\": "
-      << (res.firstUniqueTime ? std::to_string(*res.firstUniqueTime) : "null") << ",\n"
-      << "  \"poses\": " << res.path.size() << ",\n"
-      << "  \"reset_events\": " << res.resetEvents << ",\n"
-      << "  \"reset_particles\": " << res.resetParticles << ",\n"
-      << "  \"gated_readings\": " << res.gated << ",\n"
-      << "  \"lost_events\": " << lostJson(res) << ",\n"
-      << "  \"emitters_failed\": " << idsJson(cfg, res, S::Failed) << ",\n"
-      << "  \"emitters_inconsistent\": " << idsJson(cfg, res, S::Inconsistent) << ",\n"
-      << "  \"odometry_start\": \"" << res.odometryStart << "\",\n"
-      << "  \"filter_seconds\": " << res.seconds << ",\n  \"run\": " << identity;
+    const bool estimate = cfg.map->likelihoodOptions.association ==
+                          rfir::maps::CIREmitterMap::TAssociation::Estimate;
+    TJson j;
+    j["rawlog"] = cfg.rawlogPath;
+    j["emitters"] = cfg.emitterPath;
+    j["mode"] = cfg.odometryOnly ? "odometry-only" : "monte-carlo";
+    j["seed"] = cfg.seed;
+    j["num_particles"] = cfg.params.numParticles;
+    j["association"] = estimate ? "estimate" : "particle";
+    j["instants"] = res.steps;
+    j["ir_observations"] = res.irObservations;
+    j["readings"] = res.readings;
+    j["readings_used"] = res.used;
+    j["unknown_ids"] = res.unknownIds;
+    j["raw_windows_decoded"] = res.decoded;
+    j["first_unique_time"] =
+        res.firstUniqueTime ? printed(*res.firstUniqueTime, "%f") : TJson();
+    j["poses"] = res.path.size();
+    j["reset_events"] = res.resetEvents;
+    j["reset_particles"] = res.resetParticles;
+    j["gated_readings"] = res.gated;
+    j["lost_events"] = lostJson(res);
+    j["emitters_failed"] = idsJson(cfg, res, S::Failed);
+    j["emitters_inconsistent"] = idsJson(cfg, res, S::Inconsistent);
+    j["odometry_start"] = res.odometryStart;
+    j["filter_seconds"] = printed(res.seconds, "%.10g");
+    j["run"] = TJson::parse(identity);
+    // The error rows as rfir_eval writes them (errors.json, rfir-eval --json-file).
     for (size_t i = 0; i < ev.rows.size(); i++)
-        o << ",\n  \"" << (i == 0 ? "path_errors" : "spot_errors")
-          << "\": " << rfir::eval::toJson(ev.rows[i]);
-    o << "\n}\n";
-    return o.str();
+        j[i == 0 ? "path_errors" : "spot_errors"] =
+            TJson::parse(rfir::eval::toJson(ev.rows[i]));
+    return rfir::common::dumpJson(j) + "\n";
 }
 
 void plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,

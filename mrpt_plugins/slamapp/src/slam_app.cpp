@@ -5,6 +5,7 @@
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/ini_override.h>
+#include <rfir/common/json.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/output_set.h>
 #include <rfir/common/progress.h>
@@ -164,24 +165,28 @@ TTruth loadTruth(const TAppArgs& a, const rfir::eval::TRawlogInfo& info) {
     return t;
 }
 
+using rfir::common::printed;
+using rfir::common::TJson;
+
 std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
-                      uint64_t seed, const std::string& identity,
-                      const std::string& smoother) {
+                      uint64_t seed, const std::string& identity, const TJson& smoother) {
     size_t tags = 0, lms = 0;
     for (const auto& l : run.map) (l.isTag ? tags : lms)++;
-    std::ostringstream o;
-    o << std::setprecision(9) << "{\"method\": \"" << cfg.slam.method
-      << "\", \"seed\": " << seed << ", \"steps\": " << run.path.size()
-      << ", \"tags_mapped\": " << tags << ", \"landmarks_mapped\": " << lms
-      << ", \"robot_particles\": " << cfg.slam.robot_particles
-      << ", \"mean_update_time_s\": " << run.meanStepTime
-      << ", \"max_update_time_s\": " << run.maxStepTime
-      << ", \"total_time_s\": " << run.totalTime << ", \"kidnap_resets\": " << run.resets
-      << ", \"kidnap_reset_times_s\": [";
-    for (size_t k = 0; k < run.resetTimes.size(); k++)
-        o << (k ? ", " : "") << run.resetTimes[k];
-    o << "]" << smoother << ", \"run\": " << identity << "}\n";
-    return o.str();
+    TJson j;
+    j["method"] = cfg.slam.method;
+    j["seed"] = seed;
+    j["steps"] = run.path.size();
+    j["tags_mapped"] = tags;
+    j["landmarks_mapped"] = lms;
+    j["robot_particles"] = cfg.slam.robot_particles;
+    j["mean_update_time_s"] = printed(run.meanStepTime);
+    j["max_update_time_s"] = printed(run.maxStepTime);
+    j["total_time_s"] = printed(run.totalTime);
+    j["kidnap_resets"] = run.resets;
+    j["kidnap_reset_times_s"] = printed(run.resetTimes);
+    if (!smoother.is_null()) j["smoother"] = smoother;
+    j["run"] = TJson::parse(identity);
+    return rfir::common::dumpJson(j) + "\n";
 }
 
 const std::vector<std::string> kOutputPatterns = {
@@ -192,7 +197,7 @@ const std::vector<std::string> kOutputPatterns = {
 void writeSettingsAndStats(rfir::common::COutputFolder& out,
                            const rfir::slam::TSlamConfig& cfg,
                            const rfir::slam::TSlamRun& run, uint64_t seed,
-                           const std::string& ini, const std::string& smoother) {
+                           const std::string& ini, const TJson& smoother) {
     const std::string settingsPath = out.file("settings.ini");
     const std::string statsPath = out.file("stats.json");
     const auto files = out.files();
@@ -287,8 +292,7 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(
 std::optional<rfir::eval::TEvalResult> smoothAndWrite(
     const TAppArgs& a, rfir::common::COutputFolder& out,
     const rfir::slam::TSlamConfig& cfg, const TLoaded& data, const TTruth& truth,
-    const mrpt::poses::CPose2D& start, const rfir::slam::TSlamRun& run,
-    std::string& stats) {
+    const mrpt::poses::CPose2D& start, const rfir::slam::TSlamRun& run, TJson& stats) {
     const auto p = rfir::slam::smootherParams(cfg);
     logStream(a) << "rfir-slam: smoothing " << run.path.size() << " poses offline ("
                  << p.options.solver << ")\n";
@@ -297,25 +301,23 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
                  << res.seconds << " s (" << res.reads << " reads, " << res.negatives
                  << " polls without the tag; cost " << res.initialCost << " -> "
                  << res.finalCost << ")\n";
-    std::ostringstream o, cuts;
-    o << std::setprecision(9);
-    for (size_t k = 0; k < res.cutTimes.size(); k++) {
-        cuts << (k ? ", " : "") << res.cutTimes[k];
+    for (const double t : res.cutTimes)
         logStream(a) << "rfir-slam: smoother cut the odometry at t = " << std::fixed
-                     << std::setprecision(2) << res.cutTimes[k] << " s (kidnapping)\n"
+                     << std::setprecision(2) << t << " s (kidnapping)\n"
                      << std::defaultfloat;
-    }
     logStream(a) << std::setprecision(6)
                  << "rfir-slam: odometry systematic error: translation scale "
                  << res.odometryScale << ", heading drift " << res.headingDriftPerMetre
                  << " rad/m\n";
-    o << ", \"smoother\": {\"solver\": \"" << p.options.solver
-      << "\", \"iterations\": " << res.iterations << ", \"time_s\": " << res.seconds
-      << ", \"reads\": " << res.reads << ", \"negative_reads\": " << res.negatives
-      << ", \"odometry_scale\": " << res.odometryScale
-      << ", \"heading_drift_rad_per_m\": " << res.headingDriftPerMetre
-      << ", \"odometry_cut_times_s\": [" << cuts.str() << "]}";
-    stats = o.str();
+    stats = TJson();
+    stats["solver"] = p.options.solver;
+    stats["iterations"] = res.iterations;
+    stats["time_s"] = printed(res.seconds);
+    stats["reads"] = res.reads;
+    stats["negative_reads"] = res.negatives;
+    stats["odometry_scale"] = printed(res.odometryScale);
+    stats["heading_drift_rad_per_m"] = printed(res.headingDriftPerMetre);
+    stats["odometry_cut_times_s"] = printed(res.cutTimes, "%.6g");
     return writeAndScore(a, out, truth, res.run, "_smoothed",
                          cfg.slam.method + " smoothed", "<tag> <id> <x> <y> <sx> <sy>");
 }
@@ -366,7 +368,7 @@ int runSlamApp(const TAppArgs& args) {
         counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
                : "<tag or landmark> <id> <x> <y> <sx> <sy>");
     std::optional<rfir::eval::TEvalResult> smoothed;
-    std::string smootherStats;
+    TJson smootherStats;  // null unless smoothed
     if (a.smooth)
         smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run, smootherStats);
     writeSettingsAndStats(out, cfg, run, a.seed, ini, smootherStats);

@@ -227,7 +227,7 @@ quiet_checks() {
     --set tagmap.num_particles=20)
   quiet_run rfir-bench "${bench[@]}" --out-dir out -q
   exp_run rfir-bench bench "${bench[@]}"
-  grep -qF '"ini_edits": ["tagmap.num_particles=20"]' "$root/bench/benchmark.json" ||
+  grep -qE '"ini_edits": ?\["tagmap\.num_particles=20"\]' "$root/bench/benchmark.json" ||
     fail "rfir-bench --set: not in benchmark.json's ini_edits"
 }
 

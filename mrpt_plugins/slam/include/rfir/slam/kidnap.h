@@ -3,15 +3,14 @@
  * (the same per-particle log-likelihoods that weigh the particles, from the
  * reads the map's robot-update policy picks): a step disagrees when even the
  * best particle explains its reads badly (mean log-likelihood per read below
- * `collapse_loglik`, and not one of them within it). One such step is normal (a drifted filter meeting a
- * revisited tag is corrected by that very weighing); a kidnapping is a run
- * of disagreeing steps, with no agreeing step between them, over several
- * distinct known landmarks, while the short-term average of the step
- * evidence (the weighted mean likelihood per read) has fallen below its
- * long-term average (augmented MCL, as in nav2 / Beluga). Then a fraction of
- * the particles is redrawn where a re-detected known landmark lies in the
- * detecting reader's area (or at the measured range and bearing), and the
- * map is not updated while the reads disagree. */
+ * `collapse_loglik`, and not one of them within it). One such step is normal (a drifted
+ * filter meeting a revisited tag is corrected by that very weighing); a kidnapping is a
+ * run of disagreeing steps, with no agreeing step between them, over several distinct
+ * known landmarks, while the short-term average of the step evidence (the weighted mean
+ * likelihood per read) has fallen below its long-term average (augmented MCL, as in nav2
+ * / Beluga). Then a fraction of the particles is redrawn where a re-detected known
+ * landmark lies in the detecting reader's area (or at the measured range and bearing),
+ * and the map is not updated while the reads disagree. */
 #pragma once
 
 #include <rfir/slam/detections.h>

@@ -31,7 +31,7 @@ struct DetectionModelParams {
     double beta = 1.618;
     /** Gaussian model: sigma per axis = scale * half-size. */
     double gaussianSigmaScale = 1.0;
-    /** Outlier mixture (COutlierReadNoise) over the model above: share eps of
+    /** Outlier mixture (COutlierMixture) over the model above: share eps of
      * reads from anywhere, with log-likelihood `outlierLogFloor` (relative to
      * the model's best, 0). 0 = off, the seeds' model alone. INI
      * [tagmap_likelihood] outlier_weight, outlier_log_floor (docs/slam.md).

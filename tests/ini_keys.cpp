@@ -1,6 +1,7 @@
 /* rfir tests: the stock INIs through every loader. */
 #include "ini_keys.h"
 
+#include <rfir/common/ini_file.h>
 #include <rfir/models/ini_reader.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_config.h>
@@ -40,8 +41,7 @@ void loadWith(const TStockIni& ini, const std::string& section, const std::strin
     const std::string set = section.empty() ? "" : section + "." + key + "=" + value;
     switch (ini.kind) {
         case TStockIni::Kind::Slam: {
-            mrpt::config::CConfigFileMemory m;
-            m.setContent(mrpt::io::file_get_contents(ini.file));
+            auto m = rfir::common::readIniFile(ini.file);
             if (!section.empty()) m.write(section, key, value);
             rfir::slam::loadSlamConfig(m);
             return;

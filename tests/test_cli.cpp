@@ -147,7 +147,7 @@ TEST(Cli, IniEditsAreSplitOnce) {
     EXPECT_EQ(e.key, "key");
     EXPECT_EQ(e.value, "a=b");
     for (const char* bad : {"slam_particles=5", ".k=1", "slam.=1", "slam.k", ""})
-        EXPECT_THROW(parseIniEdit(bad), std::runtime_error) << bad;
+        EXPECT_THROW(parseIniEdit(bad), std::invalid_argument) << bad;
     mrpt::config::CConfigFileMemory ini;
     applyIniOverrides(ini, {"slam.robot_particles=50", "slam.robot_particles=60"});
     EXPECT_EQ(ini.read_int("slam", "robot_particles", 0), 60);  // the last one wins
@@ -174,12 +174,12 @@ TEST(Cli, IniEditsAreRoutedBySection) {
         return std::string("no error");
     };
     // Each names the edit and what is wrong with it.
-    EXPECT_NE(message("nosuch.k=1").find("unknown section [nosuch]"), std::string::npos);
+    EXPECT_NE(message("nosuch.k=1").find("[nosuch]: unknown section"), std::string::npos);
     EXPECT_NE(message("kidnap.enabled=true")
                   .find("sim:kidnap.enabled=true or "
                         "slam:kidnap.enabled=true"),
               std::string::npos);
-    EXPECT_NE(message("sim:slam.robot_particles=1").find("unknown section [slam]"),
+    EXPECT_NE(message("sim:slam.robot_particles=1").find("[slam]: unknown section"),
               std::string::npos);
     EXPECT_NE(message("ir:trajectory.speed=1").find("no INI kind 'ir:'"),
               std::string::npos);

@@ -31,7 +31,13 @@ std::string loadError(const rfir_test::TStockIni& ini, const std::string& s,
                       const std::string& k, const std::string& v) {
     try {
         rfir_test::loadWith(ini, s, k, v);
+    } catch (const rfir::ini::CIniError& e) {
+        // The one type and format of INI errors: "file: [section] key: why".
+        EXPECT_EQ(std::string(e.what()).rfind(ini.file + ": ", 0), 0u) << e.what();
+        return e.what();
     } catch (const std::exception& e) {
+        ADD_FAILURE() << ini.file << " " << s << "." << k << "=" << v
+                      << ": not a CIniError: " << e.what();
         return e.what();
     }
     return {};

@@ -129,7 +129,7 @@ TEST(IRApps, LocalizeRejectsUnknownIniKeyAndSection) {
                           "/run.gt_map.txt' --out-dir '" + kDir + "/o'"),
                  nullptr, &err),
               1);
-    EXPECT_NE(err.find("unknown INI section [localisation]"), std::string::npos) << err;
+    EXPECT_NE(err.find("[localisation]: unknown section"), std::string::npos) << err;
     const std::string bad3 = kDir + "/bad_value.ini";
     std::ofstream(bad3) << ini << "\n[MetricMap_irEmitterMap_00_likelihoodOpts]\n"
                         << "association = nearest\n";

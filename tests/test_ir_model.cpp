@@ -38,8 +38,6 @@ TEST(IRModel, VoltageLikelihoodEq52) {
 }
 
 TEST(IRModel, BeliefEq51) {
-    EXPECT_NEAR(emitterBelief({0.03, 0}, {0, 0}, 0.03), std::exp(-0.5), 1e-12);
-    EXPECT_NEAR(emitterBelief({0.03, 0.04}, {0, 0}, 0.05), std::exp(-0.5), 1e-12);
     std::vector<TEmitter> em(3);
     em[0].x = 0;
     em[1].x = 0.8;

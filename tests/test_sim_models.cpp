@@ -204,8 +204,9 @@ TEST(SimIR, LatticeOfTheThesisRoom) {
     EXPECT_EQ(rep, 8u);  // thesis 5.4: 8 repeated-ID and 3 unique-ID emitters
     EXPECT_EQ(uni, 3u);
     EXPECT_EQ(em[8].id, "12");
-    EXPECT_DOUBLE_EQ(rfir::ir::expectedVoltage(0), 1.81997);
-    EXPECT_NEAR(rfir::ir::expectedVoltage(0.1), -0.327 + 0.2855 + 1.81997, 1e-12);
+    EXPECT_DOUBLE_EQ(rfir::ir::TVoltageCurve().expected(0, 0), 1.81997);
+    EXPECT_NEAR(rfir::ir::TVoltageCurve().expected(0.1, 0), -0.327 + 0.2855 + 1.81997,
+                1e-12);
     EXPECT_THROW(rfir::ir::makeEmitterLattice({0, 0, 100, 100}), std::invalid_argument);
 }
 
@@ -265,7 +266,7 @@ TEST(SimIR, DecodedVoltageFollowsEq53) {
             }
             EXPECT_LE(nn.d, c.ir.visibleRadius);
             EXPECT_EQ(rd.emitterId(), nn.e->id);
-            const double r = rd.volts - rfir::ir::expectedVoltage(nn.d);
+            const double r = rd.volts - rfir::ir::TVoltageCurve().expected(nn.d, 0);
             s1 += r, s2 += r * r, n++;
         }
     }
@@ -296,8 +297,9 @@ TEST(SimIR, FailedEmittersNeverSeenAndHeightsScaleVoltage) {
             const double h = nn.e->z - rd.receiver.z;
             EXPECT_GE(h, 1.1 - 1e-9);
             EXPECT_LE(h, 1.3 + 1e-9);
-            EXPECT_NEAR(rd.volts, rfir::ir::expectedVoltage(nn.d) * std::pow(1.2 / h, 2),
-                        1e-9);
+            EXPECT_NEAR(
+                rd.volts,
+                rfir::ir::TVoltageCurve().expected(nn.d, 0) * std::pow(1.2 / h, 2), 1e-9);
             n++;
         }
     }
@@ -325,7 +327,7 @@ TEST(SimIR, RawWindowsDecodeToTheEmitter) {
             const auto nn = nearest(out, s.truePose, rd.receiver);
             // Near the visible edge the voltage drops to the noise: only check
             // readings with a clear signal.
-            const double v = rfir::ir::expectedVoltage(nn.d);
+            const double v = rfir::ir::TVoltageCurve().expected(nn.d, 0);
             if (nn.d > c.ir.visibleRadius) {
                 EXPECT_TRUE(dec.codes.empty()) << s.t;
             }

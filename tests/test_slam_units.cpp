@@ -129,7 +129,7 @@ TEST(SlamConfig, StockInisLoad) {
     for (const char* m : {"pf", "ps", "fastslam"}) {
         mrpt::config::CConfigFileMemory mem(stockIni(m));
         const TSlamConfig c = loadSlamConfig(mem);
-        EXPECT_EQ(c.slam.method, m);
+        EXPECT_EQ(methodName(c.slam.method), m);
         EXPECT_EQ(c.slam.robot_particles, 500u);
         const std::string dump = dumpSlamConfig(c);
         // The dump is itself a valid config with the same settings.

@@ -156,8 +156,8 @@ namespace {
 double bytesPerTag(const std::string& estimator, size_t& tags) {
     rfir::maps::CRFIDTagParticleMap m;
     m.insertionOptions.estimator = estimator;
-    m.insertionOptions.numParticles = 100;
-    m.insertionOptions.lag = 25;
+    m.insertionOptions.params.numParticles = 100;
+    m.insertionOptions.params.lag = 25;
     const auto grid = tagmaps_test::grid(12, 0.25);
     const auto readers = tagmaps_test::ring(0.03);
     const auto poses = tagmaps_test::lawnmower(-0.2, 3.0, -0.2, 3.0, 0.07, 0.02);

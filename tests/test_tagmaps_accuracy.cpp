@@ -13,7 +13,7 @@ double mapError(const std::string& kind, double half, double pitch, double rowSt
                 double roughening = 0.0) {
     CRFIDTagParticleMap m;
     m.insertionOptions.estimator = kind;
-    m.insertionOptions.rougheningSigma = roughening;
+    m.insertionOptions.params.rougheningSigma = roughening;
     const auto tags = grid(4, pitch);
     const double span = 3 * pitch;
     // Two sweeps, the second across the first (rotated 90 deg).

@@ -63,10 +63,10 @@ TEST(TagMapIni, CreatedThroughMultiMetricMap) {
     ASSERT_TRUE(m);
     const auto& io = m->insertionOptions;
     EXPECT_EQ(io.estimator, rfir::models::kFixedLagSmootherName);
-    EXPECT_EQ(io.numParticles, 64u);
-    EXPECT_EQ(io.lag, 20u);
-    EXPECT_DOUBLE_EQ(io.smootherStepSigma, 0.004);
-    EXPECT_EQ(io.resampling, rfir::models::ResamplingScheme::Stratified);
+    EXPECT_EQ(io.params.numParticles, 64u);
+    EXPECT_EQ(io.params.lag, 20u);
+    EXPECT_DOUBLE_EQ(io.params.stepSigma, 0.004);
+    EXPECT_EQ(io.params.resampling, rfir::models::ResamplingScheme::Stratified);
     EXPECT_EQ(io.seed, 77u);
     const auto& lo = m->likelihoodOptions;
     EXPECT_EQ(lo.detection.model, rfir::models::DetectionModel::Gaussian);
@@ -122,8 +122,8 @@ TEST(TagMapIni, BadOptionsAreRejectedNamingTheKey) {
 namespace {
 void buildMap(CRFIDTagParticleMap& m, const std::string& kind, double x1) {
     m.insertionOptions.estimator = kind;
-    m.insertionOptions.numParticles = 40;
-    m.insertionOptions.lag = 7;
+    m.insertionOptions.params.numParticles = 40;
+    m.insertionOptions.params.lag = 7;
     m.setLandmarkNames({"a", "b"});
     const auto tags = grid(3, 0.25);
     for (const auto& p : lawnmower(0.0, x1, 0.0, 0.5, 0.1, 0.02))
@@ -158,7 +158,7 @@ TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically) {
          {rfir::models::kParticleFilterName, rfir::models::kFixedLagSmootherName}) {
         CRFIDTagParticleMap a;
         a.likelihoodOptions.robotUpdate = rfir::maps::TRobotUpdatePolicy::Revisit;
-        a.insertionOptions.rougheningSigma = 0.001;
+        a.insertionOptions.params.rougheningSigma = 0.001;
         a.likelihoodOptions.revisitMinTravel = 0.05;
         a.likelihoodOptions.robotLikelihood = rfir::maps::TRobotLikelihood::TagParticles;
         a.likelihoodOptions.robotLikelihoodK = 5;
@@ -170,8 +170,8 @@ TEST(TagMapIo, SerializationRoundTripIsExactAndContinuesIdentically) {
         mrpt::serialization::archiveFrom(buf) >> b;
         expectSame(a, b);
         EXPECT_EQ(b.insertionOptions.estimator, kind);
-        EXPECT_EQ(b.insertionOptions.lag, 7u);
-        EXPECT_EQ(b.insertionOptions.rougheningSigma, 0.001);
+        EXPECT_EQ(b.insertionOptions.params.lag, 7u);
+        EXPECT_EQ(b.insertionOptions.params.rougheningSigma, 0.001);
         EXPECT_EQ(b.likelihoodOptions.robotUpdate,
                   rfir::maps::TRobotUpdatePolicy::Revisit);
         EXPECT_EQ(b.likelihoodOptions.robotLikelihoodK, 5u);

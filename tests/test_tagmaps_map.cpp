@@ -59,7 +59,7 @@ TEST(TagMap, NewTagSpreadsOverTheObservedReader) {
 
 TEST(TagMap, UpdateTouchesOnlyDetectedTags) {
     CRFIDTagParticleMap m;
-    m.insertionOptions.numParticles = 20;
+    m.insertionOptions.params.numParticles = 20;
     for (int i = 0; i < 3000; i++)
         m.insertObservation(*oneRead("T" + std::to_string(i)), pose3({i * 0.5, 0, 0}));
     ASSERT_EQ(m.tagCount(), 3000u);
@@ -196,7 +196,7 @@ TEST(TagMap, RangeBearingLandmarks) {
     CRFIDTagParticleMap m;
     m.setLandmarkNames({"L0", "L1", ""});
     m.insertionOptions.estimator = rfir::models::kFixedLagSmootherName;
-    m.insertionOptions.smootherStepSigma = 0.002;
+    m.insertionOptions.params.stepSigma = 0.002;
     const mrpt::math::TPoint2D truth(1.2, 0.4);
     rfir::models::TRandom noise(9);
     const auto& rb = m.likelihoodOptions.rangeBearing;

@@ -133,7 +133,9 @@ TEST(TagMapReads, BaseSumIsTheSumWithoutTheOutlierMixture) {
         for (const auto& p : {near, far}) {
             double b = 1;
             const double mixed = m.robotReadsLogLikelihood(r, p, &b);
-            EXPECT_EQ(mixed, m.detectionLogLikelihood(*tag, p, r.reads[0].area));
+            EXPECT_EQ(mixed,
+                      rfir::models::DetectionLikelihood(m.likelihoodOptions.detection)
+                          .logLikelihood(p, r.reads[0].area, tag->estimate.mean));
             EXPECT_DOUBLE_EQ(b,
                              base.logLikelihood(p, r.reads[0].area, tag->estimate.mean));
             if (eps == 0) {

@@ -10,6 +10,7 @@
 #include <rfir/common/trajectory_io.h>
 #include <rfir/ir/emitter_set.h>
 #include <rfir/localize/localize_config.h>
+#include <rfir/models/ini_reader.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_config.h>
 
@@ -129,23 +130,39 @@ TEST(TextInput, DirectoryIsNamedAsSuch) {
     }
 }
 
+/** The message of the CIniError `f` throws; any other exception fails. */
+std::string iniErrorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const rfir::ini::CIniError& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not a CIniError: " << e.what();
+        return e.what();
+    }
+    ADD_FAILURE() << "no error";
+    return {};
+}
+
+// Every INI loader of the programs: a file that is missing, a directory or
+// too large is the same error type as a bad key, naming the file.
 TEST(TextInput, IniReadersRefuseHugeFilesAndDirectories) {
     TmpDir d;
     const std::string big = sparseNulFile(d, uint64_t(5) << 30), dir = d / "sub";
+    const std::string missing = d / "missing.ini";
     std::filesystem::create_directories(dir);
-    for (const std::string& p : {big, dir}) {
-        const auto slam = errorOf([&] { rfir::slam::loadSlamConfigFile(p); });
-        EXPECT_TRUE(contains(slam, p + ": ")) << slam;
-        const auto sim = errorOf([&] { rfir::sim::loadSimConfig(p); });
-        EXPECT_TRUE(contains(sim, p + ": ")) << sim;
+    for (const std::string& p : {big, dir, missing}) {
+        const auto slam = iniErrorOf([&] { rfir::slam::loadSlamConfigFile(p); });
+        const auto sim = iniErrorOf([&] { rfir::sim::loadSimConfig(p); });
         rfir::localize::TConfig cfg;
         cfg.iniPath = p;
-        const auto loc = errorOf([&] { rfir::localize::loadConfig(cfg, ""); });
-        EXPECT_TRUE(contains(loc, p + ": ")) << loc;
-        for (const auto& m : {slam, sim, loc})
+        const auto loc = iniErrorOf([&] { rfir::localize::loadConfig(cfg, ""); });
+        for (const auto& m : {slam, sim, loc}) {
+            EXPECT_EQ(m.rfind(p + ": ", 0), 0u) << m;
             EXPECT_TRUE(contains(m, "limit") || contains(m, "directory") ||
-                        contains(m, "regular file"))
+                        contains(m, "no such INI file"))
                 << m;
+        }
     }
 }
 
@@ -187,6 +204,6 @@ TEST(TextInput, EmitterFileRefusesFarCoordinates) {
     const auto set = rfir::ir::TEmitterSet::load(p);
     EXPECT_EQ(set.emitters().size(), 2u);
     // A query far outside the grid finds nothing (and converts no huge cell).
-    EXPECT_FALSE(set.nearestWithin(1e300, -1e300, 0.3));
-    EXPECT_TRUE(set.nearestWithin(0.1, 0, 0.3));
+    EXPECT_FALSE(set.nearestIndexWithin(1e300, -1e300, 0.3));
+    EXPECT_TRUE(set.nearestIndexWithin(0.1, 0, 0.3));
 }

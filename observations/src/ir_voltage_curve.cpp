@@ -19,8 +19,4 @@ double TVoltageCurve::expected(double d, double h) const {
     return std::max(0.0, scale * (c2 * dd * dd + c1 * dd + c0));
 }
 
-double expectedVoltage(double horizontalDistance) {
-    return TVoltageCurve().expected(horizontalDistance, 0);
-}
-
 }  // namespace rfir::ir

@@ -302,10 +302,6 @@ void CPlainPsSlam::step(const rfir::slam::TSlamInput& in) {
     m.insert();
 }
 
-mrpt::poses::CPose2D CPlainPsSlam::pose() const {
-    return {m_->meanX, m_->meanY, m_->meanPhi};
-}
-
 size_t CPlainPsSlam::tagsMapped() const {
     return m_->tags.size();
 }

@@ -136,6 +136,24 @@ TJson arrayOf(const std::vector<T>& v, F f) {
 }
 }  // namespace
 
+namespace {
+/** The side-by-side rows of printTable. */
+void printPlain(const TBenchReport& r, std::ostream& out) {
+    if (r.plain.empty()) return;
+    out << "\nper step against the plain reference (thread CPU of the whole run / "
+           "steps)\n";
+    for (const auto& p : r.plain) {
+        out << row("  %s, M = %zu, %zu steps: plain %.1f us (%zu tags)", p.log.c_str(),
+                   p.M, p.steps, p.plainUs, p.plainTags);
+        for (size_t k = 0; k < p.methods.size(); k++)
+            out << row("; %s %.1f us (x %.2f, %zu tags)", p.methods[k].c_str(),
+                       p.engineUs[k], p.plainUs > 0 ? p.engineUs[k] / p.plainUs : 0,
+                       p.engineTags[k]);
+        out << "\n";
+    }
+}
+}  // namespace
+
 void printTable(const TBenchReport& r, std::ostream& out) {
     out << "rfir-bench on " << r.host << " (load average " << row("%.1f", r.loadBefore)
         << " before, " << row("%.1f", r.loadAfter)
@@ -181,21 +199,6 @@ void printTable(const TBenchReport& r, std::ostream& out) {
     for (const auto& t : r.targets)
         out << (t.measured ? (t.pass ? "  PASS  " : "  FAIL  ") : "  n/a   ") << t.name
             << ": " << t.detail << "\n";
-}
-
-void printPlain(const TBenchReport& r, std::ostream& out) {
-    if (r.plain.empty()) return;
-    out << "\nper step against the plain reference (thread CPU of the whole run / "
-           "steps)\n";
-    for (const auto& p : r.plain) {
-        out << row("  %s, M = %zu, %zu steps: plain %.1f us (%zu tags)", p.log.c_str(),
-                   p.M, p.steps, p.plainUs, p.plainTags);
-        for (size_t k = 0; k < p.methods.size(); k++)
-            out << row("; %s %.1f us (x %.2f, %zu tags)", p.methods[k].c_str(),
-                       p.engineUs[k], p.plainUs > 0 ? p.engineUs[k] / p.plainUs : 0,
-                       p.engineTags[k]);
-        out << "\n";
-    }
 }
 
 std::string toJson(const TBenchReport& r) {

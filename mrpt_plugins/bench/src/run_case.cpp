@@ -3,12 +3,9 @@
 #include <rfir/bench/synthetic_drive.h>
 #include <rfir/common/install_paths.h>
 
+#include <rfir/common/ini_file.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/slam/slam_config.h>
-
-#include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/io/vector_loadsave.h>
-#include <mrpt/system/filesystem.h>
 
 #include <algorithm>
 #include <chrono>
@@ -20,29 +17,14 @@
 namespace rfir::bench {
 using Clock = std::chrono::steady_clock;
 
-namespace {
-rfir::slam::TSlamConfig loadSlamConfigOf(const std::string& path,
-                                         const mrpt::config::CConfigFileBase& f,
-                                         const std::string& method) {
-    try {
-        return rfir::slam::loadSlamConfig(f, method);
-    } catch (const std::exception& e) {  // a memory INI's errors name no file
-        throw std::invalid_argument(path + ": " + e.what());
-    }
-}
-}  // namespace
-
 rfir::slam::TSlamConfig benchConfig(const TBenchOptions& o, const std::string& method,
                                     size_t M) {
     const std::string path = rfir::common::slamIniPath(o.configDir, method);
-    if (!mrpt::system::fileExists(path))
-        throw std::runtime_error("cannot read the stock INI '" + path + "'");
-    // Edit a memory copy: a CConfigFile writes its edits back into the stock INI.
-    mrpt::config::CConfigFileMemory f;
-    f.setContent(mrpt::io::file_get_contents(path));
+    // Edits go to the memory copy, never to the stock INI.
+    auto f = rfir::common::readIniFile(path);
     f.write("slam", "robot_particles", std::to_string(M));
     rfir::common::applyIniOverrides(f, o.slamSets);
-    auto cfg = loadSlamConfigOf(path, f, method);
+    auto cfg = rfir::slam::loadSlamConfig(f, method);
     cfg.seed = o.seed;
     return cfg;
 }

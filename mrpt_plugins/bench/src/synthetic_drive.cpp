@@ -11,11 +11,13 @@ constexpr double kJitter = 0.005;  //!< m, back and forth at every step
 constexpr size_t kReaders = 8;
 }  // namespace
 
+namespace {
 std::string syntheticTagId(size_t i) {
     char buf[32];
     std::snprintf(buf, sizeof(buf), "T%08zu", i);
     return buf;
 }
+}  // namespace
 
 CSyntheticDrive::CSyntheticDrive(size_t N, size_t perStep) : N_(N) {
     if (N < kReaders)

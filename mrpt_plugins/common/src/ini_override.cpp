@@ -9,15 +9,17 @@ TIniEdit parseIniEdit(const std::string& edit) {
     const auto eq = edit.find('=');
     const auto dot = eq == std::string::npos ? std::string::npos : edit.rfind('.', eq);
     if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 >= eq)
-        throw std::runtime_error("INI edit (--set) '" + edit +
-                                 "': expected section.key=value");
+        throw std::invalid_argument("INI edit (--set) '" + edit +
+                                    "': expected section.key=value");
     return {edit.substr(0, dot), edit.substr(dot + 1, eq - dot - 1), edit.substr(eq + 1)};
 }
 
+namespace {
 void applyIniOverride(mrpt::config::CConfigFileBase& ini, const std::string& edit) {
     const TIniEdit e = parseIniEdit(edit);
     ini.write(e.section, e.key, e.value);
 }
+}  // namespace
 
 void applyIniOverrides(mrpt::config::CConfigFileBase& ini,
                        const std::vector<std::string>& edits) {
@@ -58,16 +60,12 @@ size_t kindOf(const std::vector<TIniKind>& kinds, std::string& edit) {
                                         ":' (" + sectionsHelp(kinds) + ")");
         edit = edit.substr(colon + 1);
     }
-    std::string section;
-    try {
-        section = parseIniEdit(edit).section;
-    } catch (const std::runtime_error& e) {
-        throw std::invalid_argument(e.what());
-    }
+    const std::string section = parseIniEdit(edit).section;
     if (named) {
         if (knows(kinds[*named], section)) return *named;
-        throw std::invalid_argument("--set '" + given + "': unknown section [" + section +
-                                    "] in the " + kinds[*named].description +
+        throw std::invalid_argument("--set '" + given + "': [" + section +
+                                    "]: unknown section in the " +
+                                    kinds[*named].description +
                                     " (known: " + listOf(kinds[*named].sections) + ")");
     }
     std::vector<size_t> found;
@@ -75,8 +73,8 @@ size_t kindOf(const std::vector<TIniKind>& kinds, std::string& edit) {
         if (knows(kinds[i], section)) found.push_back(i);
     if (found.size() == 1) return found.front();
     if (found.empty())
-        throw std::invalid_argument("--set '" + given + "': unknown section [" + section +
-                                    "] (" + sectionsHelp(kinds) + ")");
+        throw std::invalid_argument("--set '" + given + "': [" + section +
+                                    "]: unknown section (" + sectionsHelp(kinds) + ")");
     std::string both;
     for (size_t i : found)
         both += (both.empty() ? "" : " or ") + kinds[i].name + ":" + edit;

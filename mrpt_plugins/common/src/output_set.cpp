@@ -163,10 +163,6 @@ std::string COutputFiles::file(const std::string& name) {
     return recordName(files_, staging_, name);
 }
 
-std::vector<std::string> COutputFiles::files() const {
-    return sorted(files_);
-}
-
 void COutputFiles::commit() {
     // The earlier set goes first: its files this run does not write (e.g. a
     // .spots.tum) must not stay beside the new ones.

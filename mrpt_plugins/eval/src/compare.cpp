@@ -35,12 +35,14 @@ bool addPassedOver(TMapErrors& m, const rfir::common::TMapFile& est,
     return true;
 }
 
+namespace {
 mrpt::img::TColor runColor(size_t i) {
     // Not the truth's blue, the tags' green and purple, or the odometry's grey.
     static const mrpt::img::TColor c[] = {
         {214, 39, 40}, {255, 127, 14}, {23, 190, 207}, {140, 86, 75}, {227, 119, 194}};
     return c[i % (sizeof(c) / sizeof(c[0]))];
 }
+}  // namespace
 
 namespace {
 TEvalResult scoreRun(const TRunSpec& s, const TCompareInput& in,

@@ -78,6 +78,7 @@ std::vector<TErrorStats> segmentStats(const std::vector<TPoseError>& errs, doubl
     return out;
 }
 
+namespace {
 TPoseError poseError(double t, const mrpt::poses::CPose2D& e,
                      const mrpt::poses::CPose2D& g) {
     TPoseError pe;
@@ -88,6 +89,7 @@ TPoseError poseError(double t, const mrpt::poses::CPose2D& e,
     pe.dist = std::hypot(pe.dx, pe.dy);
     return pe;
 }
+}  // namespace
 
 namespace {
 /** The evo-like figures of a run from its compared pose pairs. */

@@ -10,6 +10,7 @@
 namespace rfir::eval {
 using rfir::common::TMapEntry;
 
+namespace {
 const char* pluralKey(TMapEntry::Kind k) {
     switch (k) {
         case TMapEntry::Kind::Tag:
@@ -20,6 +21,7 @@ const char* pluralKey(TMapEntry::Kind k) {
             return "landmarks";
     }
 }
+}  // namespace
 
 namespace {
 std::string fmt(double v, int decimals) {

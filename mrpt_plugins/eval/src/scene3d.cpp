@@ -80,6 +80,7 @@ CSetOfObjects::Ptr readerBoxes(const std::vector<rfir::obs::TRFIDReader>& reader
 }
 }  // namespace
 
+namespace {
 COpenGLScene::Ptr buildScene(const TMapFigure& f,
                              const std::vector<rfir::obs::TRFIDReader>& readers) {
     auto scene = COpenGLScene::Create();
@@ -110,6 +111,7 @@ COpenGLScene::Ptr buildScene(const TMapFigure& f,
         scene->insert(readerBoxes(readers, f.estPath->back().pose));
     return scene;
 }
+}  // namespace
 
 void saveScene3D(const std::string& file, const TMapFigure& fig,
                  const std::vector<rfir::obs::TRFIDReader>& readers) {

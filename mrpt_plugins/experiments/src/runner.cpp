@@ -2,17 +2,15 @@
 #include <rfir/common/install_paths.h>
 #include <rfir/experiments/runner.h>
 
+#include <rfir/common/ini_file.h>
 #include <rfir/common/ini_override.h>
-#include <rfir/common/text_input.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/slam_inputs.h>
 #include <rfir/slam/slam_outputs.h>
 
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
 
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,23 +18,15 @@ namespace rfir::experiments {
 namespace {
 using rfir::common::TMapEntry;
 
-std::string readText(const std::string& path) {
-    return rfir::common::readSmallTextFile(path, "INI file");
-}
-
 rfir::slam::TSlamConfig slamConfig(const TSetup& s, const TMethodSpec& m,
                                    const TPoint& p) {
     const std::string path = rfir::common::slamIniPath(s.configDir, m.method);
-    mrpt::config::CConfigFileMemory ini(readText(path));
-    // Edits go into an in-memory copy of the INI (never the file).
+    auto ini = rfir::common::readIniFile(path);
+    // Edits go into the in-memory copy of the INI (never the file).
     rfir::common::applyIniOverrides(ini, p.slamEdits);
     rfir::common::applyIniOverrides(ini, m.edits);
     rfir::common::applyIniOverrides(ini, s.slamEdits);
-    try {
-        return rfir::slam::loadSlamConfig(ini, m.method);
-    } catch (const std::exception& e) {  // a memory INI's errors name no file
-        throw std::invalid_argument(path + ": " + e.what());
-    }
+    return rfir::slam::loadSlamConfig(ini, m.method);
 }
 
 std::vector<std::string> simOverrides(const TSetup& s, const TSubRun& run,

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 namespace rfir::common {
+namespace {
 const char* kindName(TMapEntry::Kind k) {
     switch (k) {
         case TMapEntry::Kind::Tag:
@@ -22,6 +23,7 @@ const char* kindName(TMapEntry::Kind k) {
             return "landmark";
     }
 }
+}  // namespace
 
 bool isValidId(const std::string& id) {
     if (id.empty() || id.size() > 64) return false;

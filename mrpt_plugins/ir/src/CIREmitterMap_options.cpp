@@ -2,7 +2,6 @@
 #include <rfir/maps/CIREmitterMap.h>
 #include <rfir/models/ini_reader.h>
 
-#include <mrpt/config/CConfigFile.h>
 #include <mrpt/system/filesystem.h>
 
 #include <memory>
@@ -19,7 +18,8 @@ const std::vector<std::string> kHeightModels = {"fixed", "inverse_square", "angu
 const std::vector<std::string> kAssociations = {"estimate", "particle"};
 }  // namespace
 
-const std::vector<std::string>& CIREmitterMap::TLikelihoodOptions::allowedKeys() {
+namespace {
+const std::vector<std::string>& likelihoodKeys() {
     static const std::vector<std::string> k = {"curve_c0",
                                                "curve_c1",
                                                "curve_c2",
@@ -40,10 +40,11 @@ const std::vector<std::string>& CIREmitterMap::TLikelihoodOptions::allowedKeys()
                                                "volt_outlier_range"};
     return k;
 }
+}  // namespace
 
 void CIREmitterMap::TLikelihoodOptions::loadFromConfigFile(
     const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    const rfir::ini::CIniSection s_sec(c, s, allowedKeys());
+    const rfir::ini::CIniSection s_sec(c, s, likelihoodKeys());
     auto& cv = params.curve;
     cv.c0 = s_sec.getDouble("curve_c0", cv.c0, R::closed(-1000, 1000));
     cv.c1 = s_sec.getDouble("curve_c1", cv.c1, R::closed(-1000, 1000));
@@ -109,10 +110,9 @@ void CIREmitterMap::TMapDefinition::loadFromConfigFile_map_specific(
     const rfir::ini::CIniSection s_sec(c, s, {"emitter_file"});
     emitterFile = s_sec.getString("emitter_file", "");
     // A relative path is taken from the INI file's folder.
-    const auto* f = dynamic_cast<const mrpt::config::CConfigFile*>(&c);
-    if (!emitterFile.empty() && emitterFile[0] != '/' && f) {
-        const std::string dir =
-            mrpt::system::extractFileDirectory(f->getAssociatedFile());
+    const std::string ini = rfir::ini::fileNameOf(c);
+    if (!emitterFile.empty() && emitterFile[0] != '/' && !ini.empty()) {
+        const std::string dir = mrpt::system::extractFileDirectory(ini);
         if (!dir.empty()) emitterFile = dir + "/" + emitterFile;
     }
     likelihoodOpts.loadFromConfigFile(c, prefix + "_likelihoodOpts");

@@ -126,12 +126,4 @@ std::optional<size_t> TEmitterSet::nearestIndexWithin(double x, double y,
     });
     return found;
 }
-
-std::optional<double> TEmitterSet::nearestWithin(double x, double y,
-                                                 double radius) const {
-    const auto i = nearestIndexWithin(x, y, radius);
-    if (!i) return std::nullopt;
-    const double dx = m_emitters[*i].x - x, dy = m_emitters[*i].y - y;
-    return dx * dx + dy * dy;
-}
 }  // namespace rfir::ir

@@ -13,6 +13,11 @@ double voltageLogLikelihood(double v, double vExpected, double sigma) {
     return -e * e / (2 * sigma * sigma);
 }
 
+namespace {
+/** Eq. 5.2 mixed with a uniform outlier component of weight w over [0, range]
+ * V, in the units of voltageLogLikelihood (0 at V = Vbar when w = 0):
+ * log((1 - w) exp(-e^2 / 2 sigma^2) + w sqrt(2 pi) sigma / range); w = 0 gives
+ * voltageLogLikelihood exactly. */
 double voltageMixtureLogLikelihood(double v, double vExpected, double sigma, double w,
                                    double range) {
     const double g = voltageLogLikelihood(v, vExpected, sigma);
@@ -21,12 +26,7 @@ double voltageMixtureLogLikelihood(double v, double vExpected, double sigma, dou
     const double u = w * std::sqrt(2 * M_PI) * sigma / range;
     return std::log((1 - w) * std::exp(g) + u);
 }
-
-double emitterBelief(const mrpt::math::TPoint2D& e, const mrpt::math::TPoint2D& r,
-                     double sigma) {
-    const double dx = e.x - r.x, dy = e.y - r.y;
-    return std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma));
-}
+}  // namespace
 
 size_t mostLikelyEmitter(const std::vector<size_t>& candidates,
                          const std::vector<TEmitter>& emitters,

@@ -51,6 +51,7 @@ std::string startNote(const TAggregate& a) {
 }
 }  // namespace
 
+namespace {
 std::string figure(const TSession& s, const TOptions& opt, const TRunSpec& spec,
                    const std::string& name, const std::string& caption) {
     const std::string dir = s.workDir + "/fig_" + name;
@@ -60,6 +61,7 @@ std::string figure(const TSession& s, const TOptions& opt, const TRunSpec& spec,
                   fs::copy_options::overwrite_existing);
     return "![" + caption + "](" + opt.imgRel + "/" + name + ")\n\n*" + caption + "*\n\n";
 }
+}  // namespace
 
 namespace {
 struct TRoom {

@@ -1,9 +1,9 @@
 /* rfir-localize: configuration. */
 #include <rfir/localize/localize_config.h>
 
+#include <rfir/common/ini_file.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>
-#include <rfir/common/text_input.h>
 #include <rfir/models/ini_reader.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
@@ -18,18 +18,8 @@ namespace rfir::localize {
 namespace {
 const std::string kMapPrefix = "MetricMap_irEmitterMap_00";
 
-void checkSections(const mrpt::config::CConfigFileBase& c, const std::string& file) {
-    std::vector<std::string> sections;
-    c.getAllSections(sections);
-    for (const auto& s : sections) {
-        bool ok = false;
-        for (const auto& a : configSections()) ok = ok || a == s;
-        if (!ok)
-            throw std::runtime_error("unknown INI section [" + s +
-                                     "] (allowed: localization, motion, MetricMap, " +
-                                     kMapPrefix + "_creationOpts, _insertOpts, " +
-                                     "_likelihoodOpts)");
-    }
+void checkSections(const mrpt::config::CConfigFileBase& c) {
+    rfir::ini::checkSections(c, configSections());
     const rfir::ini::CIniSection mm(c, "MetricMap", {"irEmitterMap_count"});
     mm.getInt("irEmitterMap_count", 1, 1, 1);
     const rfir::ini::CIniSection ins(
@@ -72,15 +62,12 @@ std::string stockIniPath() {
 }
 
 void loadConfig(TConfig& cfg, const std::string& emitterOverride, bool requireEmitters) {
-    if (!std::filesystem::exists(cfg.iniPath))
-        throw std::runtime_error(cfg.iniPath + ": INI file not found");
     // A memory copy: CConfigFile would write our additions back to the file.
-    mrpt::config::CConfigFileMemory c;
-    c.setContent(rfir::common::readSmallTextFile(cfg.iniPath, "INI file"));
+    auto c = rfir::common::readIniFile(cfg.iniPath);
+    rfir::common::applyIniOverrides(c, cfg.overrides);  // a bad edit: a usage error
     std::string ef;
     try {
-        rfir::common::applyIniOverrides(c, cfg.overrides);
-        checkSections(c, cfg.iniPath);
+        checkSections(c);
         cfg.params.loadFromConfigFile(c, "");
         // The map as MRPT builds its own: initializers, then a multi-map. Set
         // the count to 1 when the section omits it.
@@ -94,7 +81,10 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride, bool requireEm
             ef = std::filesystem::absolute(emitterOverride).string();
         else if (!ef.empty() && std::filesystem::path(ef).is_relative())
             ef = (std::filesystem::path(cfg.iniPath).parent_path() / ef).string();
-        if (!ef.empty()) c.write(sec, "emitter_file", ef);
+        // Absolute for the map factory, which takes a relative one from the
+        // INI's folder.
+        if (!ef.empty())
+            c.write(sec, "emitter_file", std::filesystem::absolute(ef).string());
         // Check our sections and the emitter file first: errors raised inside
         // MRPT's map factory come back wrapped in its exception format.
         rfir::maps::CIREmitterMap::TLikelihoodOptions check;
@@ -106,20 +96,24 @@ void loadConfig(TConfig& cfg, const std::string& emitterOverride, bool requireEm
         mm.setListOfMaps(inits);
         cfg.map = mm.mapByClass<rfir::maps::CIREmitterMap>();
         cfg.emitterPath = ef;
+    } catch (const rfir::ini::CIniError&) {
+        throw;  // names file, section and key already
     } catch (const std::exception& e) {
-        // The INI reader's messages are clean already (and start with "[").
-        const std::string what = dynamic_cast<const rfir::ini::CIniError*>(&e)
-                                     ? std::string(e.what())
-                                     : cleanMessage(e);
-        // Emitter-file errors already name their file and line.
+        // MRPT's map factory wraps what crosses it in banners: keep the text.
+        const std::string what = cleanMessage(e);
+        // Emitter-file errors name their file and line; the INI reader's name
+        // the INI.
         if (what.rfind(ef + ":", 0) == 0) throw std::runtime_error(what);
-        throw std::runtime_error(cfg.iniPath + ": " + what);
+        if (what.rfind(cfg.iniPath + ":", 0) == 0) throw rfir::ini::CIniError(what);
+        throw rfir::ini::CIniError(cfg.iniPath + ": " + what);
     }
-    if (!cfg.map) throw std::runtime_error(cfg.iniPath + ": no irEmitterMap was created");
+    if (!cfg.map)
+        throw rfir::ini::CIniError(cfg.iniPath +
+                                   ": [MetricMap]: no irEmitterMap was created");
     if (cfg.emitterPath.empty() && requireEmitters)
-        throw std::runtime_error(
-            "no emitter file: give --emitters FILE or set emitter_file in [" +
-            kMapPrefix + "_creationOpts] of " + cfg.iniPath);
+        throw rfir::ini::CIniError(cfg.iniPath + ": [" + kMapPrefix +
+                                   "_creationOpts] emitter_file: no emitter file (set it "
+                                   "or give --emitters FILE)");
 }
 
 std::string settingsIni(const TConfig& cfg, const std::string& commandLine) {

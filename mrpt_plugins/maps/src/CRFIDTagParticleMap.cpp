@@ -80,13 +80,6 @@ bool CRFIDTagParticleMap::isNewVisit(const std::string& tagId) const {
     return e && Impl::newVisit(*this, *e, m_track[0]);
 }
 
-double CRFIDTagParticleMap::detectionLogLikelihood(const TTagEntry& tag,
-                                                   const mrpt::math::TPose2D& robot,
-                                                   const ReaderArea& r) const {
-    return rfir::models::DetectionLikelihood(likelihoodOptions.detection)
-        .logLikelihood(robot, r, tag.estimate.mean);
-}
-
 bool CRFIDTagParticleMap::isEmpty() const {
     return m_tags.empty() && m_landmarks.empty();
 }

@@ -41,14 +41,7 @@ struct CRFIDTagParticleMapImpl {
     }
 
     static rfir::models::CTagEstimatorPtr makeEstimator(const Map::TInsertionOptions& o) {
-        rfir::models::TTagEstimatorParams p;
-        p.numParticles = o.numParticles;
-        p.lag = o.lag;
-        p.stepSigma = o.smootherStepSigma;
-        p.resampling = o.resampling;
-        p.essThreshold = o.essThreshold;
-        p.rougheningSigma = o.rougheningSigma;
-        return rfir::models::createTagEstimator(o.estimator, p);
+        return rfir::models::createTagEstimator(o.estimator, o.params);
     }
 
     /** Refreshes the cached estimate and, for robot_likelihood = tag_particles,
@@ -133,14 +126,14 @@ struct CRFIDTagParticleMapImpl {
             if (mode == TTagRobotPose::SamplesVisit && !m.m_robotSamples.empty()) {
                 e.spreadOrigin = robot;
                 e.spreadTravel = m.m_track[0].travel;
-                e.spreadPoses.resize(m.insertionOptions.numParticles);
+                e.spreadPoses.resize(m.insertionOptions.params.numParticles);
                 for (auto& q : e.spreadPoses) q = robotFor(m, true, robot, rng);
             }
         } else {
             // Per particle, a robot pose drawn from the robot set places it.
             const auto pts = rfir::models::sampleReaderArea(
                 [&] { return robotFor(m, true, robot, rng); }, r,
-                m.insertionOptions.numParticles, rng);
+                m.insertionOptions.params.numParticles, rng);
             e.estimator->initFromPoints(pts);
         }
         refresh(m, e);
@@ -309,7 +302,8 @@ struct CRFIDTagParticleMapImpl {
                 e.id = id;
                 e.estimator = makeEstimator(m.insertionOptions);
                 auto pts = rfir::models::sampleRangeBearingInverse(
-                    sensor, z.range, z.yaw, rb, m.insertionOptions.numParticles, rng);
+                    sensor, z.range, z.yaw, rb, m.insertionOptions.params.numParticles,
+                    rng);
                 e.estimator->initFromPoints(pts);
                 refresh(m, e);
                 markRead(m, e, before, m.m_track[1], 1);

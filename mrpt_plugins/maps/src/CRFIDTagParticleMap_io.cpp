@@ -167,10 +167,10 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << genericMapParams;
     const auto& io = insertionOptions;
     out << io.estimator;  // v3: a registry name (v0-2: 0 / 1)
-    out.WriteAs<uint64_t>(io.numParticles);
-    out.WriteAs<uint64_t>(io.lag);
-    out << io.smootherStepSigma << io.rougheningSigma << io.essThreshold;
-    out.WriteAs<uint8_t>(static_cast<uint8_t>(io.resampling));
+    out.WriteAs<uint64_t>(io.params.numParticles);
+    out.WriteAs<uint64_t>(io.params.lag);
+    out << io.params.stepSigma << io.params.rougheningSigma << io.params.essThreshold;
+    out.WriteAs<uint8_t>(static_cast<uint8_t>(io.params.resampling));
     out.WriteAs<uint64_t>(io.seed);
     const auto& lo = likelihoodOptions;
     out.WriteAs<uint8_t>(static_cast<uint8_t>(lo.detection.model));
@@ -208,10 +208,11 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                 io.estimator = in.ReadAs<uint8_t>() == 0
                                    ? rfir::models::kParticleFilterName
                                    : rfir::models::kFixedLagSmootherName;
-            io.numParticles = in.ReadAs<uint64_t>();
-            io.lag = in.ReadAs<uint64_t>();
-            in >> io.smootherStepSigma >> io.rougheningSigma >> io.essThreshold;
-            io.resampling =
+            io.params.numParticles = in.ReadAs<uint64_t>();
+            io.params.lag = in.ReadAs<uint64_t>();
+            in >> io.params.stepSigma >> io.params.rougheningSigma >>
+                io.params.essThreshold;
+            io.params.resampling =
                 static_cast<rfir::models::ResamplingScheme>(in.ReadAs<uint8_t>());
             io.seed = in.ReadAs<uint64_t>();
             auto& lo = likelihoodOptions;
@@ -335,6 +336,6 @@ std::string CRFIDTagParticleMap::asString() const {
     std::ostringstream s;
     s << "rfir::maps::CRFIDTagParticleMap: " << m_tags.size() << " tags, "
       << m_landmarks.size() << " landmarks (" << insertionOptions.estimator
-      << ", L=" << insertionOptions.numParticles << ")";
+      << ", L=" << insertionOptions.params.numParticles << ")";
     return s.str();
 }

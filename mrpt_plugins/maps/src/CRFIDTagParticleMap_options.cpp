@@ -24,18 +24,20 @@ const std::vector<std::string> kRobotPoseNames = {"mean", "samples_init", "sampl
 const std::vector<std::string> kRobotLikNames = {"tag_mean", "tag_particles"};
 }  // namespace
 
-const std::vector<std::string>& CRFIDTagParticleMap::TInsertionOptions::allowedKeys() {
+namespace {
+const std::vector<std::string>& insertionKeys() {
     static const std::vector<std::string> k = {
         "estimator",        "num_particles",       "lag",        "smoother_step_sigma",
         "roughening_sigma", "ess_threshold",       "resampling", "seed",
         "tag_robot_pose",   "spread_commit_travel"};
     return k;
 }
+}  // namespace
 
 void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
     const mrpt::config::CConfigFileBase& c, const std::string& s) {
     using rfir::ini::TRange;
-    const rfir::ini::CIniSection sec(c, s, allowedKeys());
+    const rfir::ini::CIniSection sec(c, s, insertionKeys());
     // Any registered estimator (one file and one registration line each).
     const auto names = rfir::models::tagEstimatorNames();
     const auto at = std::find(names.begin(), names.end(), estimator);
@@ -43,16 +45,18 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
         throw std::invalid_argument("CRFIDTagParticleMap: estimator '" + estimator +
                                     "' set in code is not registered");
     estimator = names[sec.getEnum("estimator", names, size_t(at - names.begin()))];
-    numParticles = size_t(sec.getInt("num_particles", int64_t(numParticles), 1, 1000000));
-    lag = size_t(sec.getInt("lag", int64_t(lag), 1, 100000));
+    params.numParticles =
+        size_t(sec.getInt("num_particles", int64_t(params.numParticles), 1, 1000000));
+    params.lag = size_t(sec.getInt("lag", int64_t(params.lag), 1, 100000));
     // Sizes in metres: 10 m is far beyond any reader footprint or tag spread.
-    smootherStepSigma =
-        sec.getDouble("smoother_step_sigma", smootherStepSigma, TRange::closed(0, 10));
-    rougheningSigma =
-        sec.getDouble("roughening_sigma", rougheningSigma, TRange::closed(0, 10));
-    essThreshold = sec.getDouble("ess_threshold", essThreshold, TRange::aboveZero(1));
-    resampling = static_cast<rfir::models::ResamplingScheme>(
-        sec.getEnum("resampling", kResamplingNames, static_cast<size_t>(resampling)));
+    params.stepSigma =
+        sec.getDouble("smoother_step_sigma", params.stepSigma, TRange::closed(0, 10));
+    params.rougheningSigma =
+        sec.getDouble("roughening_sigma", params.rougheningSigma, TRange::closed(0, 10));
+    params.essThreshold =
+        sec.getDouble("ess_threshold", params.essThreshold, TRange::aboveZero(1));
+    params.resampling = static_cast<rfir::models::ResamplingScheme>(sec.getEnum(
+        "resampling", kResamplingNames, static_cast<size_t>(params.resampling)));
     seed = sec.getUInt64("seed", seed);
     tagRobotPose = static_cast<TTagRobotPose>(sec.getEnum(
         "tag_robot_pose", kRobotPoseNames, static_cast<size_t>(tagRobotPose)));
@@ -62,19 +66,20 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
     o << "estimator           = " << estimator << "\n"
-      << "num_particles       = " << numParticles << "\n"
-      << "lag                 = " << lag << "\n"
-      << "smoother_step_sigma = " << smootherStepSigma << "\n"
-      << "roughening_sigma    = " << rougheningSigma << "\n"
-      << "ess_threshold       = " << essThreshold << "\n"
-      << "resampling          = " << rfir::models::toString(resampling) << "\n"
+      << "num_particles       = " << params.numParticles << "\n"
+      << "lag                 = " << params.lag << "\n"
+      << "smoother_step_sigma = " << params.stepSigma << "\n"
+      << "roughening_sigma    = " << params.rougheningSigma << "\n"
+      << "ess_threshold       = " << params.essThreshold << "\n"
+      << "resampling          = " << rfir::models::toString(params.resampling) << "\n"
       << "seed                = " << seed << "\n"
       << "tag_robot_pose      = " << kRobotPoseNames[static_cast<size_t>(tagRobotPose)]
       << "\n"
       << "spread_commit_travel = " << spreadCommitTravel << "\n";
 }
 
-const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowedKeys() {
+namespace {
+const std::vector<std::string>& likelihoodKeys() {
     static const std::vector<std::string> k = {
         "detection_model",      "beta",
         "gaussian_sigma_scale", "rb_sigma_range",
@@ -85,11 +90,12 @@ const std::vector<std::string>& CRFIDTagParticleMap::TLikelihoodOptions::allowed
         "outlier_log_floor"};
     return k;
 }
+}  // namespace
 
 void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
     const mrpt::config::CConfigFileBase& c, const std::string& s) {
     using rfir::ini::TRange;
-    const rfir::ini::CIniSection sec(c, s, allowedKeys());
+    const rfir::ini::CIniSection sec(c, s, likelihoodKeys());
     detection.model = static_cast<rfir::models::DetectionModel>(sec.getEnum(
         "detection_model", kModelNames, static_cast<size_t>(detection.model)));
     detection.beta = sec.getDouble("beta", detection.beta, TRange::aboveZero(100));

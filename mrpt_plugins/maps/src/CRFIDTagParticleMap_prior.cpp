@@ -63,7 +63,7 @@ void CRFIDTagParticleMap::loadPriorFromTextFile(const std::string& path) {
         TTagEntry e;
         e.id = r.id;
         e.estimator = CRFIDTagParticleMapImpl::makeEstimator(insertionOptions);
-        std::vector<mrpt::math::TPoint2D> pts(insertionOptions.numParticles);
+        std::vector<mrpt::math::TPoint2D> pts(insertionOptions.params.numParticles);
         for (auto& p : pts)
             p = {r.x + r.sx * rng.drawGaussian1D_normalized(),
                  r.y + r.sy * rng.drawGaussian1D_normalized()};

@@ -5,15 +5,6 @@
 #include <cmath>
 
 namespace rfir::models {
-double stepDetectionLogLikelihood(double ex, double ey, double hx, double hy,
-                                  double beta) {
-    return CStepReadNoise(beta).logLik(ex, ey, hx, hy);
-}
-
-double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy) {
-    return CGaussianReadNoise::logLikSigma(ex, ey, sx, sy);
-}
-
 double DetectionLikelihood::logLikelihood(const mrpt::math::TPose2D& robot,
                                           const ReaderArea& r,
                                           const mrpt::math::TPoint2D& tag) const {
@@ -32,12 +23,6 @@ bool DetectionLikelihood::contradicts(const mrpt::math::TPose2D& robot,
                                       const mrpt::math::TPoint2D& tag) const {
     const auto e = readModel(robot, r.x, r.y, tag);
     return baseLogLikelihoodOffset(e.x, e.y, r.halfX, r.halfY) < m_p.outlierLogFloor;
-}
-
-double DetectionLikelihood::likelihood(const mrpt::math::TPose2D& robot,
-                                       const ReaderArea& r,
-                                       const mrpt::math::TPoint2D& tag) const {
-    return std::exp(logLikelihood(robot, r, tag));
 }
 
 }  // namespace rfir::models

@@ -83,6 +83,7 @@ bool parseDouble(const std::string& tok, double& v) {
     return true;
 }
 
+namespace {
 bool parseInt(const std::string& tok, int64_t& v) {
     const size_t start = (!tok.empty() && (tok[0] == '-' || tok[0] == '+')) ? 1 : 0;
     if (tok.size() == start || tok.size() > 19 + start) return false;
@@ -93,17 +94,38 @@ bool parseInt(const std::string& tok, int64_t& v) {
     v = x;
     return true;
 }
+}  // namespace
 
-std::string fileOf(const mrpt::config::CConfigFileBase& cfg) {
+std::string fileNameOf(const mrpt::config::CConfigFileBase& cfg) {
     if (const auto* f = dynamic_cast<const mrpt::config::CConfigFile*>(&cfg))
-        return f->getAssociatedFile() + ": ";
+        return f->getAssociatedFile();
+    if (const auto* f = dynamic_cast<const CIniFile*>(&cfg)) return f->file();
     return {};
 }
 
+namespace {
+std::string fileOf(const mrpt::config::CConfigFileBase& cfg) {
+    const std::string f = fileNameOf(cfg);
+    return f.empty() ? f : f + ": ";
+}
+}  // namespace
+
+void checkSections(const mrpt::config::CConfigFileBase& cfg,
+                   const std::vector<std::string>& known) {
+    std::vector<std::string> sections;
+    cfg.getAllSections(sections);
+    for (const auto& s : sections)
+        if (!s.empty() && std::find(known.begin(), known.end(), s) == known.end())
+            throw CIniError(fileOf(cfg) + "[" + s +
+                            "]: unknown section (known: " + joined(known, ", ") + ")");
+}
+
+namespace {
 std::string where(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                   const std::string& key) {
     return fileOf(cfg) + "[" + section + "] " + key;
 }
+}  // namespace
 
 void fail(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
           const std::string& key, const std::string& why) {

@@ -7,14 +7,6 @@
 #include <stdexcept>
 
 namespace rfir::models {
-ResamplingScheme resamplingSchemeFromString(const std::string& s) {
-    if (s == "systematic") return ResamplingScheme::Systematic;
-    if (s == "stratified") return ResamplingScheme::Stratified;
-    if (s == "multinomial") return ResamplingScheme::Multinomial;
-    throw std::invalid_argument("unknown resampling scheme '" + s +
-                                "' (systematic, stratified, multinomial)");
-}
-
 const char* toString(ResamplingScheme s) {
     switch (s) {
         case ResamplingScheme::Systematic:

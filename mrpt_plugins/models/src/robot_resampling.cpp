@@ -43,6 +43,9 @@ std::vector<size_t> residual(const std::vector<double>& logW,
 }
 }  // namespace
 
+namespace {
+/** Resampling indices of n log-weights by MRPT's scheme (multinomial,
+ * residual, stratified, systematic), drawn from `rng`; sorted. */
 std::vector<size_t> robotResampleIndices(const std::vector<double>& logW,
                                          PF::TParticleResamplingAlgorithm scheme,
                                          rfir::models::TRandom& rng) {
@@ -58,6 +61,7 @@ std::vector<size_t> robotResampleIndices(const std::vector<double>& logW,
             return rfir::models::resampleIndices(logW, logW.size(), S::Systematic, rng);
     }
 }
+}  // namespace
 
 bool resampleIfNeeded(mrpt::bayes::CParticleFilterCapable& pf,
                       const PF::TParticleFilterOptions& o, rfir::models::TRandom& rng) {

@@ -1,4 +1,5 @@
 /* rfir-sim: the run parameters and their INI sections. */
+#include <rfir/common/ini_file.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/common/text_input.h>
 #include <rfir/sim/simulator.h>
@@ -220,26 +221,17 @@ const std::vector<std::string>& simConfigSections() {
 
 TSimConfig loadSimConfig(const std::string& iniPath,
                          const std::vector<std::string>& overrides) {
-    mrpt::config::CConfigFileMemory f(
-        rfir::common::readSmallTextFile(iniPath, "simulation INI file"));
+    auto f = rfir::common::readIniFile(iniPath);
     rfir::common::applyIniOverrides(f, overrides);
-    std::vector<std::string> secs;
-    f.getAllSections(secs);
-    for (const auto& s : secs) {
-        bool ok = s.empty();
-        for (const auto& k : simConfigSections()) ok = ok || s == k;
-        if (!ok)
-            throw std::runtime_error(iniPath + ": [" + s +
-                                     "] unknown section (known: simulation, robot, "
-                                     "trajectory, kidnap, odometry, rfid, ir, "
-                                     "range_bearing)");
-    }
+    rfir::ini::checkSections(f, simConfigSections());
     TSimConfig c;
     try {
         c.loadFromConfigFile(f, "");
         c.validate();
+    } catch (const rfir::ini::CIniError&) {
+        throw;  // names the file already
     } catch (const std::exception& e) {
-        throw std::runtime_error(iniPath + ": " + e.what());
+        throw rfir::ini::CIniError(iniPath + ": " + e.what());
     }
     return c;
 }

@@ -135,10 +135,6 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     }
 }
 
-double CRobotPoseParticles::stepLogEvidence() const {
-    return stepLogEvidence(m_stepLogLik);
-}
-
 double CRobotPoseParticles::stepLogEvidence(const std::vector<double>& terms) const {
     // log sum w exp(term) - log sum w over the weights before the weighing
     // (log_w - ll: the weighing's own terms, not a second likelihood pass).

@@ -153,12 +153,4 @@ std::optional<rfir::models::OdometryGaussian> motionOf(
     return rfir::models::OdometryGaussian::fromOdometry(u.x(), u.y(), u.phi(), p);
 }
 
-std::optional<mrpt::poses::CPose2D> odometryIncrement(
-    const mrpt::obs::CActionCollection* acts) {
-    if (!acts) return std::nullopt;
-    auto mv = acts->getBestMovementEstimation();
-    if (!mv) return std::nullopt;
-    return mv->rawOdometryIncrementReading;
-}
-
 }  // namespace rfir::slam

@@ -42,6 +42,9 @@ std::string methodName(TMethod m) {
     }
 }
 
+namespace {
+/** MRPT's enum names (prSystematic, ...) or the short ones (multinomial,
+ * residual, stratified, systematic). */
 PF::TParticleResamplingAlgorithm parseResampling(const std::string& name) {
     std::string n = name;
     std::transform(n.begin(), n.end(), n.begin(), ::tolower);
@@ -55,7 +58,9 @@ PF::TParticleResamplingAlgorithm parseResampling(const std::string& name) {
                    "' (multinomial, residual, stratified, systematic or MRPT's "
                    "prMultinomial, prResidual, prStratified, prSystematic)");
 }
+}  // namespace
 
+namespace {
 std::string resamplingName(PF::TParticleResamplingAlgorithm r) {
     switch (r) {
         case PF::prMultinomial:
@@ -68,6 +73,7 @@ std::string resamplingName(PF::TParticleResamplingAlgorithm r) {
             return "systematic";
     }
 }
+}  // namespace
 
 void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                       const std::string& s) {
@@ -76,44 +82,43 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         c, s,
         {"method", "robot_particles", "resampling", "resample_ess", "start_std_xy",
          "start_std_phi", "tag_update_pose"});
-    method = methodName(
-        TMethod(sec.getEnum("method", kMethodNames, size_t(parseMethod(method)))));
+    method = TMethod(sec.getEnum("method", kMethodNames, size_t(method)));
     robot_particles =
         unsigned(sec.getInt("robot_particles", int64_t(robot_particles), 1, 1000000));
-    const std::string r = sec.getString("resampling", resampling);
+    const std::string r = sec.getString("resampling", resamplingName(resampling));
     try {
-        resampling = resamplingName(parseResampling(r));
+        resampling = parseResampling(r);
     } catch (const std::invalid_argument&) {
         sec.fail("resampling", "unknown resampling scheme '" + r + "'");
     }
-    sec.declare("resampling", "enum", resampling,
+    sec.declare("resampling", "enum", resamplingName(resampling),
                 "multinomial, residual, stratified, systematic (also MRPT's "
                 "prMultinomial, ...)");
     resample_ess = sec.getDouble("resample_ess", resample_ess, R::aboveZero(1));
     start_std_xy = sec.getDouble("start_std_xy", start_std_xy, R::closed(0, 100));
     start_std_phi = sec.getDouble("start_std_phi", start_std_phi, R::closed(0, M_PI));
-    tag_update_pose = kTagPoseNames[sec.getEnum("tag_update_pose", kTagPoseNames,
-                                                tag_update_pose == "predicted" ? 1 : 0)];
+    tag_update_pose = TTagUpdatePose(
+        sec.getEnum("tag_update_pose", kTagPoseNames, size_t(tag_update_pose)));
 }
 
 void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                     const std::string& s) const {
-    c.write(s, "method", method, -1, -1, "pf | ps | fastslam | odometry");
+    c.write(s, "method", methodName(method), -1, -1, "pf | ps | fastslam | odometry");
     c.write(s, "robot_particles", int(robot_particles), -1, -1, "robot particles M");
-    c.write(s, "resampling", resampling, -1, -1,
+    c.write(s, "resampling", resamplingName(resampling), -1, -1,
             "multinomial | residual | stratified | systematic");
     c.write(s, "resample_ess", resample_ess, -1, -1,
             "resample when normalised ESS < this (1: every step)");
     c.write(s, "start_std_xy", start_std_xy, -1, -1, "initial spread [m]");
     c.write(s, "start_std_phi", start_std_phi, -1, -1, "initial spread [rad]");
-    c.write(s, "tag_update_pose", tag_update_pose, -1, -1,
+    c.write(s, "tag_update_pose", kTagPoseNames[size_t(tag_update_pose)], -1, -1,
             "pf/ps weigh-first: tags updated at the posterior or predicted mean");
 }
 
 PF::TParticleFilterOptions TSlamOptions::pfOptions() const {
     PF::TParticleFilterOptions o;
     o.PF_algorithm = PF::pfStandardProposal;
-    o.resamplingMethod = parseResampling(resampling);
+    o.resamplingMethod = resampling;
     o.BETA = resample_ess;
     o.sampleSize = robot_particles;
     o.adaptiveSampleSize = false;

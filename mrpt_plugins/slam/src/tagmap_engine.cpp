@@ -140,7 +140,8 @@ void CTagMapEngine::afterMotion() {
     predictedForInsert_.reset();
     if (literal_ && mapThisStep_)
         insert(pf_.meanPose());
-    else if (!literal_ && cfg_.slam.tag_update_pose == "predicted")
+    else if (!literal_ &&
+             cfg_.slam.tag_update_pose == TSlamOptions::TTagUpdatePose::Predicted)
         predictedForInsert_ = pf_.meanPose();
     resolveReads();
     baseLogLik_.assign(pf_.m_particles.size(), 0.0);
@@ -264,12 +265,6 @@ std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {
 
 std::set<std::string> tagMapSections() {
     return {"tagmap", "tagmap_likelihood"};
-}
-
-std::string joinSections(const std::set<std::string>& s) {
-    std::string r;
-    for (const auto& x : s) r += (r.empty() ? "" : ", ") + x;
-    return r;
 }
 
 std::shared_ptr<TTagMapSettings> loadTagMapOptions(

@@ -4,6 +4,7 @@
 #include <rfir/slam/graph_smoother.h>
 
 #include <rfir/common/atomic_file.h>
+#include <rfir/common/ini_file.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/common/json.h>
 #include <rfir/common/map_io.h>
@@ -20,12 +21,10 @@
 #include <rfir/slam/slam_inputs.h>
 #include <rfir/slam/slam_outputs.h>
 
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/filesystem.h>
 
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -42,21 +41,11 @@ std::ostream& logStream(const TAppArgs& a) {
     return a.quiet ? sink : std::cerr;
 }
 
-/** The INI with the --set edits written over it. */
+/** The INI with the --set edits written over it (in memory). */
 rfir::slam::TSlamConfig loadConfig(const std::string& ini, const TAppArgs& a) {
-    if (a.sets.empty()) return rfir::slam::loadSlamConfigFile(ini, a.method);
-    std::ifstream f(ini);
-    if (!mrpt::system::fileExists(ini) || !f)
-        throw std::invalid_argument("cannot read INI file '" + ini + "'");
-    std::stringstream text;
-    text << f.rdbuf();
-    mrpt::config::CConfigFileMemory mem(text.str());
-    rfir::common::applyIniOverrides(mem, a.sets);
-    try {
-        return rfir::slam::loadSlamConfig(mem, a.method);
-    } catch (const std::exception& e) {
-        throw std::invalid_argument(ini + " (with --set): " + e.what());
-    }
+    auto f = rfir::common::readIniFile(ini);
+    rfir::common::applyIniOverrides(f, a.sets);
+    return rfir::slam::loadSlamConfig(f, a.method);
 }
 
 struct TLoaded {
@@ -173,7 +162,7 @@ std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSla
     size_t tags = 0, lms = 0;
     for (const auto& l : run.map) (l.isTag ? tags : lms)++;
     TJson j;
-    j["method"] = cfg.slam.method;
+    j["method"] = rfir::slam::methodName(cfg.slam.method);
     j["seed"] = seed;
     j["steps"] = run.path.size();
     j["tags_mapped"] = tags;
@@ -319,7 +308,8 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
     stats["heading_drift_rad_per_m"] = printed(res.headingDriftPerMetre);
     stats["odometry_cut_times_s"] = printed(res.cutTimes, "%.6g");
     return writeAndScore(a, out, truth, res.run, "_smoothed",
-                         cfg.slam.method + " smoothed", "<tag> <id> <x> <y> <sx> <sy>");
+                         rfir::slam::methodName(cfg.slam.method) + " smoothed",
+                         "<tag> <id> <x> <y> <sx> <sy>");
 }
 }  // namespace
 
@@ -332,8 +322,8 @@ int runSlamApp(const TAppArgs& args) {
     cfg.seed = a.seed;
     findGroundTruth(a);
 
-    logStream(a) << "rfir-slam: " << cfg.slam.method << " on " << a.rawlog << " (config "
-                 << ini << ", seed " << a.seed << ")\n";
+    logStream(a) << "rfir-slam: " << rfir::slam::methodName(cfg.slam.method) << " on "
+                 << a.rawlog << " (config " << ini << ", seed " << a.seed << ")\n";
     // The folder is checked (and refused if it holds foreign files) before the run.
     rfir::common::COutputFolder out(a.outDir, kOutputPatterns, "rfir-slam");
     TLoaded data = readInputs(a.rawlog, cfg.motion);
@@ -364,7 +354,7 @@ int runSlamApp(const TAppArgs& args) {
     const TTruth truth = loadTruth(a, data.info);
     const bool counts = cfg.method() != rfir::slam::TMethod::FastSLAM;
     auto errs = writeAndScore(
-        a, out, truth, run, "", cfg.slam.method,
+        a, out, truth, run, "", rfir::slam::methodName(cfg.slam.method),
         counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
                : "<tag or landmark> <id> <x> <y> <sx> <sy>");
     std::optional<rfir::eval::TEvalResult> smoothed;

@@ -3,7 +3,7 @@
  * unique-ID emitter (an LED array, several codes) in the centre of every four. */
 #pragma once
 
-#include <rfir/obs/ir_voltage_curve.h>  // expectedVoltage, eq. 5.3
+#include <rfir/obs/ir_voltage_curve.h>  // TVoltageCurve, eq. 5.3
 
 #include <cstdint>
 #include <string>

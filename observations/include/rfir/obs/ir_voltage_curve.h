@@ -33,7 +33,4 @@ struct TVoltageCurve {
     double visibleRadius(double h) const;
 };
 
-/** Eq. 5.3 as fitted (TVoltageCurve's defaults) at horizontal distance d (m). */
-double expectedVoltage(double horizontalDistance);
-
 }  // namespace rfir::ir

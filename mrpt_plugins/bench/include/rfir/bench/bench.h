@@ -156,8 +156,6 @@ void evaluate(TBenchReport& r);
 /** "PS-SLAM", "PF-SLAM", "FastSLAM" for ps, pf, fastslam. */
 const char* methodLabel(const std::string& method);
 void printTable(const TBenchReport& r, std::ostream& out);
-/** The side-by-side rows of printTable. */
-void printPlain(const TBenchReport& r, std::ostream& out);
 std::string toJson(const TBenchReport& r);
 /** The results as Markdown tables (for docs/benchmark.md). */
 std::string toMarkdown(const TBenchReport& r);

@@ -27,7 +27,6 @@ class CPlainPsSlam {
     ~CPlainPsSlam();
     void reset(const mrpt::poses::CPose2D& start);
     void step(const rfir::slam::TSlamInput& in);
-    mrpt::poses::CPose2D pose() const;
     size_t tagsMapped() const;
 
   private:

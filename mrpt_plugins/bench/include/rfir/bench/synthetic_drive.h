@@ -28,8 +28,6 @@ class CSyntheticDrive {
     rfir::slam::TSlamInput populationStep(size_t i) const;
     /** Timed update k (k = 0, 1, ...), after every population step. */
     rfir::slam::TSlamInput timedStep(size_t k) const;
-    /** Detections in a timed update. */
-    static constexpr size_t kTimedDetections = 2;
 
   private:
     rfir::obs::CObservationRFIDReaders::Ptr observation(
@@ -39,7 +37,5 @@ class CSyntheticDrive {
     std::vector<size_t> chunkStart_;  //!< first tag index of each insertion step
     std::vector<rfir::obs::TRFIDReader> readers_;
 };
-
-std::string syntheticTagId(size_t i);
 
 }  // namespace rfir::bench

@@ -14,12 +14,9 @@ struct TIniEdit {
 };
 
 /** Splits an edit: the section is what comes before the last '.' ahead of the
- * '='. Throws std::runtime_error "INI edit (--set) '<edit>': expected
+ * '='. Throws std::invalid_argument (a usage error) "INI edit (--set) '<edit>': expected
  * section.key=value" when malformed. */
 TIniEdit parseIniEdit(const std::string& edit);
-
-/** Writes one "section.key=value" edit into `ini` (parseIniEdit). */
-void applyIniOverride(mrpt::config::CConfigFileBase& ini, const std::string& edit);
 
 /** applyIniOverride for each edit, in order. */
 void applyIniOverrides(mrpt::config::CConfigFileBase& ini,

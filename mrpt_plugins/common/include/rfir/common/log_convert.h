@@ -88,10 +88,10 @@ class CInstantBuilder {
                std::optional<mrpt::poses::CPose2D>& odometry,
                std::vector<mrpt::obs::CObservation::Ptr>& obs) const;
     const rfir::obs::CObservationLogHeader& header() const { return hdr_; }
-    /** Landmark ID of a name; -1 if not in the header's table. */
-    int32_t landmarkId(const std::string& name) const;
 
   private:
+    /** Landmark ID of a name; -1 if not in the header's table. */
+    int32_t landmarkId(const std::string& name) const;
     rfir::obs::CObservationLogHeader hdr_;
     rfir::ir::TDecoderParams decoder_;
     std::unordered_map<std::string, int32_t> landmarkIds_;

@@ -28,7 +28,6 @@ class COutputFolder {
      * (RENAME_EXCHANGE; else moves the earlier set aside first), then removes
      * the earlier set. */
     void commit();
-    const std::string& outDir() const { return outDir_; }
 
   private:
     void removeLeftovers() const;
@@ -48,7 +47,6 @@ class COutputFiles {
     COutputFiles(const COutputFiles&) = delete;
     COutputFiles& operator=(const COutputFiles&) = delete;
     std::string file(const std::string& name);
-    std::vector<std::string> files() const;
     void commit();
 
   private:

@@ -94,7 +94,6 @@ class CTextLogParser {
     void finish(size_t lastLineNo) const;
 
     const TTextLogHeader& header() const { return header_; }
-    const std::string& fileName() const { return file_; }
 
   private:
     [[noreturn]] void fail(const std::string& msg) const;

@@ -35,7 +35,7 @@ struct TCompareInput {
 
 /** Scores every run (files read here; errors name the file) and, first, the
  * dead reckoning as a row "odometry" when the rawlog has odometry. Adds the
- * truth, the odometry and every run's path to `fig` (runColor), and
+ * truth, the odometry and every run's path to `fig` (a colour per run), and
  * the map of the last run that has one. */
 std::vector<TEvalResult> compareRuns(const std::vector<TRunSpec>& runs,
                                      const TCompareInput& in, TMapFigure& fig);
@@ -43,12 +43,9 @@ std::vector<TEvalResult> compareRuns(const std::vector<TRunSpec>& runs,
 /** The robot's position error over time of every row (and of each row's
  * `odometry`, grey), as a PNG: rfir-eval --error-plot, rfir-slam's
  * error_time.png. Rows named "odometry" are grey too; the others take
- * runColor() in order, as compareRuns gives their paths. */
+ * the colours compareRuns gives their paths, in order. */
 void plotErrorsOverTime(const std::string& png, const std::vector<TEvalResult>& rows,
                         const std::string& title);
-
-/** Colour of the i-th compared run's path and error curve. */
-mrpt::img::TColor runColor(size_t i);
 
 /** {"runs":[toJson(row), ...]} on one line. */
 std::string toJsonRuns(const std::vector<TEvalResult>& rows);

@@ -111,10 +111,6 @@ TRobotErrors computeRobotErrors(const rfir::common::TPath2D& est,
 /** Statistics of a set of per-pose errors (e.g. a time window of perPose). */
 TErrorStats statsOf(const std::vector<TPoseError>& errs);
 
-/** Error of an estimated pose against a true one (estimate minus truth). */
-TPoseError poseError(double t, const mrpt::poses::CPose2D& est,
-                     const mrpt::poses::CPose2D& gt);
-
 /** Statistics per time window: [t0, t1] cut into n equal windows (the last
  * one closed); an error at time t goes to window floor(n (t - t0) / (t1 -
  * t0)), clamped to the first or last window when t lies outside [t0, t1]. A

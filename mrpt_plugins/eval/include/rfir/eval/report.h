@@ -53,7 +53,4 @@ std::string formatErrorTable(const std::vector<TEvalResult>& rows,
  * Absent parts are omitted. */
 std::string toJson(const TEvalResult& r);
 
-/** Plural JSON key of a map kind: "tags", "emitters", "landmarks". */
-const char* pluralKey(rfir::common::TMapEntry::Kind k);
-
 }  // namespace rfir::eval

@@ -25,11 +25,8 @@ inline constexpr const char* kEstTagPoints = "estimated_tag_positions";
 inline constexpr const char* kReaders = "readers";
 }  // namespace scene_names
 
-/** The figure's paths and maps in 3D (z = 0, metres), colours as in the PNG. */
-mrpt::opengl::COpenGLScene::Ptr buildScene(
-    const TMapFigure& fig, const std::vector<rfir::obs::TRFIDReader>& readers);
-
-/** Writes buildScene() gz-compressed (MRPT's .3Dscene), atomically. */
+/** Writes the figure's paths and maps in 3D (z = 0, metres; colours as in the
+ * PNG) gz-compressed (MRPT's .3Dscene), atomically. */
 void saveScene3D(const std::string& file, const TMapFigure& fig,
                  const std::vector<rfir::obs::TRFIDReader>& readers);
 

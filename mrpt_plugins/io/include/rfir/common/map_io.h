@@ -24,7 +24,6 @@ struct TMapEntry {
 };
 using TMapFile = std::vector<TMapEntry>;
 
-const char* kindName(TMapEntry::Kind k);
 /** True if `id` is a valid textlog ID: [A-Za-z0-9_.:-], 1..64 characters. */
 bool isValidId(const std::string& id);
 

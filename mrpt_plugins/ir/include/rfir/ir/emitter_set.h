@@ -45,12 +45,10 @@ class TEmitterSet {
     size_t distinctIdCount() const { return m_byId.size(); }
     /** Bounding box of the emitters (x0, y0, x1, y1); zeros when empty. */
     void bounds(double& x0, double& y0, double& x1, double& y1) const;
-    /** Squared horizontal distance from (x, y) to the nearest emitter, if one
-     * lies within `radius` (<= kGridCell) of it; a grid lookup, O(1). */
-    std::optional<double> nearestWithin(double x, double y, double radius) const;
-    /** Index of that nearest emitter (same lookup). */
+    /** Index of the emitter nearest to (x, y), if one lies within `radius`
+     * (<= kGridCell) of it; a grid lookup, O(1). */
     std::optional<size_t> nearestIndexWithin(double x, double y, double radius) const;
-    /** Cell side of the lookup grid (m): the largest radius nearestWithin takes. */
+    /** Cell side of the lookup grid (m): the largest radius nearestIndexWithin takes. */
     static constexpr double kGridCell = 0.5;
 
   private:

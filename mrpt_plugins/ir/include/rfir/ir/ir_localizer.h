@@ -113,26 +113,23 @@ class CIRLocalizer {
                         const rfir::obs::CObservationIRSignals* ir,
                         std::optional<double> t = std::nullopt);
 
-    bool started() const { return m_started; }
-    /** The estimate used for the Estimate association, nullopt while the
-     * particles are too spread out (association_max_std). */
-    std::optional<mrpt::math::TPose2D> associationReference() const;
     /** Weighted mean of the particles (eq. 5.4). */
     mrpt::poses::CPose2D estimate() const;
-    /** Weighted share of particles that place the reading's receiver within
-     * the emitter's visible radius. */
-    double fractionInView(const rfir::obs::CObservationIRSignals::TReading& r,
-                          const rfir::ir::TEmitter& e) const;
-    const mrpt::slam::CMonteCarloLocalization2D& particles() const { return m_pdf; }
-    const TLocalizerParams& params() const { return m_params; }
     /** Per emitter (index as the map's emitters()): readings, gated, checks. */
     const std::vector<TEmitterHealth>& emitterHealth() const {
         return m_monitor.health();
     }
-    /** Largest standard deviation of the particles' position (m). */
-    double positionStd() const;
 
   private:
+    /** The estimate used for the Estimate association, nullopt while the
+     * particles are too spread out (association_max_std). */
+    std::optional<mrpt::math::TPose2D> associationReference() const;
+    /** Weighted share of particles that place the reading's receiver within
+     * the emitter's visible radius. */
+    double fractionInView(const rfir::obs::CObservationIRSignals::TReading& r,
+                          const rfir::ir::TEmitter& e) const;
+    /** Largest standard deviation of the particles' position (m). */
+    double positionStd() const;
     /** Receiver and emitter ID (empty: nothing) of every decoded reading. */
     using TSeen = std::vector<std::pair<rfir::obs::TIRReceiver, std::string>>;
     rfir::obs::CObservationIRSignals::Ptr prepare(

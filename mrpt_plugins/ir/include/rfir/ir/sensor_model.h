@@ -18,20 +18,9 @@ namespace rfir::ir {
 /** Eq. 5.2 in log form with alpha = 1: -(V - Vbar)^2 / (2 sigma^2). */
 double voltageLogLikelihood(double v, double vExpected, double sigma);
 
-/** Eq. 5.2 mixed with a uniform outlier component of weight w over
- * [0, range] V, in the same units as voltageLogLikelihood (0 at V = Vbar when
- * w = 0): log((1 - w) exp(-e^2 / 2 sigma^2) + w sqrt(2 pi) sigma / range).
- * w = 0 returns voltageLogLikelihood exactly. */
-double voltageMixtureLogLikelihood(double v, double vExpected, double sigma, double w,
-                                   double range);
-
-/** Eq. 5.1: belief that the emitter at `emitter` is the one seen by a receiver
- * at `receiver` (exp(-|x_p - x_r|^2 / (2 sigma^2)), sigma = 30 mm in the seed). */
-double emitterBelief(const mrpt::math::TPoint2D& emitter,
-                     const mrpt::math::TPoint2D& receiver, double sigma);
-
-/** Index (into `emitters`) of the candidate with the largest belief (eq. 5.1),
- * i.e. the candidate nearest to `receiver`. Candidates must be non-empty. */
+/** Index (into `emitters`) of the candidate with the largest belief of eq. 5.1,
+ * exp(-|x_p - x_r|^2 / (2 sigma^2)), which falls with the distance whatever
+ * sigma: the candidate nearest to `receiver`. Candidates must be non-empty. */
 size_t mostLikelyEmitter(const std::vector<size_t>& candidates,
                          const std::vector<TEmitter>& emitters,
                          const mrpt::math::TPoint2D& receiver);

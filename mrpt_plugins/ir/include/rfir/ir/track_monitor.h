@@ -73,7 +73,6 @@ class CTrackMonitor {
     void clearAfterReset();
 
     const std::vector<TEmitterHealth>& health() const { return m_health; }
-    const TRobustParams& params() const { return m_p; }
 
   private:
     void classify(TEmitterHealth& h) const;

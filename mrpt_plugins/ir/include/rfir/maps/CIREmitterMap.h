@@ -99,7 +99,6 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;
         void dumpToTextStream(std::ostream& out) const override;
-        static const std::vector<std::string>& allowedKeys();
     } likelihoodOptions;
 
     // CMetricMap interface

@@ -31,9 +31,4 @@ std::string expAssociation(const TSession& s, const TOptions& opt);     // ours
 std::string expParticles(const TSession& s, const TOptions& opt);       // ours: M
 std::string expRawAndDecoder(const TSession& s, const TOptions& opt);   // ours
 
-/** Runs `spec` with the first seed, copies its path.png to opt.imgDir/name and
- * returns the markdown image. */
-std::string figure(const TSession& s, const TOptions& opt, const TRunSpec& spec,
-                   const std::string& name, const std::string& caption);
-
 }  // namespace rfir::irexp

@@ -128,11 +128,6 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
      * (false for unknown tags). */
     bool isNewVisit(const std::string& tagId) const;
 
-    /** Log-likelihood of one detection of a mapped tag by reader `r` for a
-     * robot pose (SPEC section 2), ignoring the robot-update policy. */
-    double detectionLogLikelihood(const TTagEntry& tag, const mrpt::math::TPose2D& robot,
-                                  const rfir::models::ReaderArea& r) const;
-
     /** The reads of one observation that weigh the robot (per robot_update
      * policy), resolved against the map once per update: weighing M particles
      * then costs only the likelihoods, not an ID lookup per particle and read.
@@ -204,13 +199,10 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     struct TInsertionOptions : public mrpt::config::CLoadableOptions {
         /** estimator: a registered name (rfir::models::tagEstimatorNames()). */
         std::string estimator = rfir::models::kParticleFilterName;
-        size_t numParticles = 100;         //!< num_particles (L)
-        size_t lag = 25;                   //!< lag (smoother)
-        double smootherStepSigma = 0.001;  //!< smoother_step_sigma (m)
-        double rougheningSigma = 0.0;      //!< roughening_sigma (m, PF only)
-        double essThreshold = 1.0;         //!< ess_threshold (PF only)
-        rfir::models::ResamplingScheme resampling =
-            rfir::models::ResamplingScheme::Systematic;    //!< resampling
+        /** Each tag's estimator as the models define it: num_particles (L),
+         * lag, smoother_step_sigma (m), resampling, ess_threshold and
+         * roughening_sigma (m) (the last two PF only). */
+        rfir::models::TTagEstimatorParams params;
         uint64_t seed = 1;                                 //!< seed
         TTagRobotPose tagRobotPose = TTagRobotPose::Mean;  //!< tag_robot_pose
         /** spread_commit_travel (m): samples_visit makes the spread permanent
@@ -222,7 +214,6 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;
         void dumpToTextStream(std::ostream& out) const override;
-        static const std::vector<std::string>& allowedKeys();
     } insertionOptions;
 
     struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
@@ -248,7 +239,6 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                 const std::string& section) override;
         void dumpToTextStream(std::ostream& out) const override;
-        static const std::vector<std::string>& allowedKeys();
     } likelihoodOptions;
 
     MAP_DEFINITION_START(CRFIDTagParticleMap)

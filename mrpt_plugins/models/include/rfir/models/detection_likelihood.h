@@ -40,14 +40,6 @@ struct DetectionModelParams {
     double outlierLogFloor = -10.0;
 };
 
-/** Step model, log of eq. 3.7 with per-axis sigma = half-size:
- *  0 if |ex| < hx and |ey| < hy, else log(beta) - ex^2/(2hx^2) - ey^2/(2hy^2).
- * (ex, ey): tag minus reader centre, in the robot frame. */
-double stepDetectionLogLikelihood(double ex, double ey, double hx, double hy,
-                                  double beta);
-/** Gaussian model: -ex^2/(2sx^2) - ey^2/(2sy^2) (unnormalised, 0 at the centre). */
-double gaussianDetectionLogLikelihood(double ex, double ey, double sx, double sy);
-
 /** Functor over the models: e from readModel, then the noise model.
  * Likelihoods are unnormalised (max 1): only ratios between particles matter
  * to the filters. */
@@ -80,8 +72,6 @@ class DetectionLikelihood {
      * weighed against several reads computes them once. */
     double logLikelihood(const mrpt::math::TPose2D& robot, double c, double s,
                          const ReaderArea& r, const mrpt::math::TPoint2D& tag) const;
-    double likelihood(const mrpt::math::TPose2D& robot, const ReaderArea& r,
-                      const mrpt::math::TPoint2D& tag) const;
     /** logLikelihood without the mixture: the robot's weighing mixes the
      * sum over a tag's samples, and the kidnap check reads the base terms
      * (a kidnapping is a drop the mixture would cap). */
@@ -96,8 +86,6 @@ class DetectionLikelihood {
      * call it a random reading rather than a read of a tag at `tag`. */
     bool contradicts(const mrpt::math::TPose2D& robot, const ReaderArea& r,
                      const mrpt::math::TPoint2D& tag) const;
-
-    const DetectionModelParams& params() const { return m_p; }
 
   private:
     DetectionModelParams m_p;

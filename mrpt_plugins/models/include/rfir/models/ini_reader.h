@@ -5,6 +5,7 @@
 #pragma once
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <cstdint>
 #include <stdexcept>
@@ -40,17 +41,31 @@ struct TRange {
     std::string str() const;
 };
 
-/** "file: " of a CConfigFile, empty for in-memory configs. */
-std::string fileOf(const mrpt::config::CConfigFileBase& cfg);
+/** An INI file's text held in memory (edits such as --set go to the copy,
+ * never back to the file) that keeps the file's name for messages. */
+class CIniFile : public mrpt::config::CConfigFileMemory {
+  public:
+    CIniFile(std::string file, const std::string& text)
+        : mrpt::config::CConfigFileMemory(text), file_(std::move(file)) {}
+    const std::string& file() const { return file_; }
 
-/** "file: [section] key" for messages; file is left out for in-memory configs. */
-std::string where(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                  const std::string& key);
+  private:
+    std::string file_;
+};
+
+/** The file of a CConfigFile or a CIniFile, empty for other in-memory configs. */
+std::string fileNameOf(const mrpt::config::CConfigFileBase& cfg);
 
 /** Throws CIniError("file: [section] key: why"). */
 [[noreturn]] void fail(const mrpt::config::CConfigFileBase& cfg,
                        const std::string& section, const std::string& key,
                        const std::string& why);
+
+/** Refuses (CIniError "file: [s]: unknown section (known: ...)") any section
+ * of `cfg` not in `known`; the unnamed section before the first header is
+ * MRPT's and always passes. */
+void checkSections(const mrpt::config::CConfigFileBase& cfg,
+                   const std::vector<std::string>& known);
 
 class CIniSection {
   public:
@@ -79,7 +94,6 @@ class CIniSection {
 
     [[noreturn]] void fail(const std::string& key, const std::string& why) const;
     const std::string& name() const { return section_; }
-    const mrpt::config::CConfigFileBase& config() const { return cfg_; }
     /** The raw (trimmed) value; empty when absent. */
     std::string raw(const std::string& key) const;
 
@@ -90,6 +104,5 @@ class CIniSection {
 
 /** Strict whole-token parses (no trailing text, finite). */
 bool parseDouble(const std::string& tok, double& v);
-bool parseInt(const std::string& tok, int64_t& v);
 
 }  // namespace rfir::ini

@@ -70,7 +70,6 @@ class OdometryGaussian {
     }
 
     const double* covariance() const { return m_C; }  //!< row-major 3x3
-    const double* mean() const { return m_mean; }
 
   private:
     void factor();

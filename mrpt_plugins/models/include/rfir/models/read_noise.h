@@ -69,36 +69,10 @@ class COutlierMixture {
         const double hi = std::max(x, b);
         return hi + std::log(std::exp(x - hi) + std::exp(b - hi));
     }
-    /** d mix / d a at a, given out = mix(a): the base term's share. */
-    double share(double a, double out) const {
-        return m_on ? std::exp(m_log1mEps + a - out) : 1.0;
-    }
 
   private:
     bool m_on = false;
     double m_log1mEps = 0, m_logEpsFloor = 0;
-};
-
-/** The mixture over a base noise model, with its gradient. */
-template <class BASE>
-class COutlierReadNoise {
-  public:
-    COutlierReadNoise(const BASE& base, double eps, double logFloor)
-        : m_base(base), m_mix(eps, logFloor) {}
-    double logLik(double ex, double ey, double hx, double hy,
-                  double* grad = nullptr) const {
-        const double a = m_base.logLik(ex, ey, hx, hy, grad);
-        const double out = m_mix.mix(a);
-        if (grad) {  // d/de log((1-eps) L + c) = share of the base term * d log L / de
-            const double w = m_mix.share(a, out);
-            grad[0] *= w, grad[1] *= w;
-        }
-        return out;
-    }
-
-  private:
-    BASE m_base;
-    COutlierMixture m_mix;
 };
 
 }  // namespace rfir::models

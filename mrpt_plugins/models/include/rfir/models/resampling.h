@@ -17,8 +17,6 @@ enum class ResamplingScheme {
     Multinomial  //!< L independent draws
 };
 
-/** Parses "systematic" | "stratified" | "multinomial"; throws otherwise. */
-ResamplingScheme resamplingSchemeFromString(const std::string& s);
 const char* toString(ResamplingScheme s);
 
 /** Indices of the n resampled particles, drawn proportionally to

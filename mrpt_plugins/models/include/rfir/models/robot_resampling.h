@@ -18,13 +18,6 @@ namespace rfir::models {
 mrpt::bayes::CParticleFilter::TParticleFilterOptions withoutMrptResampling(
     mrpt::bayes::CParticleFilter::TParticleFilterOptions o);
 
-/** Resampling indices of n log-weights by MRPT's scheme (multinomial,
- * residual, stratified, systematic), drawn from `rng`; sorted. */
-std::vector<size_t> robotResampleIndices(
-    const std::vector<double>& logW,
-    mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm scheme,
-    rfir::models::TRandom& rng);
-
 /** ESS < o.BETA: resample `pf` (performSubstitution) by o.resamplingMethod.
  * Returns whether it did. */
 bool resampleIfNeeded(mrpt::bayes::CParticleFilterCapable& pf,

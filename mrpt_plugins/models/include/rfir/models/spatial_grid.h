@@ -19,7 +19,6 @@ class TSpatialGrid {
   public:
     explicit TSpatialGrid(double cell = 1.0) : m_cell(cell) {}
 
-    double cell() const { return m_cell; }
     bool empty() const { return m_cells.empty(); }
     /** Drops every value and takes a new cell side. */
     void reset(double cell) {

@@ -117,7 +117,6 @@ class CTagEstimatorPtr {
     CTagEstimatorPtr& operator=(CTagEstimatorPtr&&) noexcept = default;
     CTagEstimator* operator->() const { return m_p.get(); }
     CTagEstimator& operator*() const { return *m_p; }
-    CTagEstimator* get() const { return m_p.get(); }
     explicit operator bool() const { return bool(m_p); }
 
   private:

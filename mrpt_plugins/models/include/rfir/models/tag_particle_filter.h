@@ -51,7 +51,6 @@ class TagParticleFilter : public CTagEstimator {
     size_t numParticles() const override { return m_p.numParticles; }
     uint64_t updateCount() const override { return m_updates; }
     size_t memoryBytes() const override;
-    const Params& params() const { return m_p; }
 
     void writeState(mrpt::serialization::CArchive& out) const override;
     void readState(mrpt::serialization::CArchive& in) override;

@@ -53,7 +53,6 @@ class CRobotPoseParticles
      * (the step's evidence). Empty / 0 when the step did not weigh.
      * @{ */
     const std::vector<double>& stepLogLik() const { return m_stepLogLik; }
-    double stepLogEvidence() const;
     /** The evidence of other per-particle terms under this step's prior
      * weights (log_w before the weighing): e.g. the weighing without its
      * outlier mixture. terms.size() must be the particle count. */

@@ -77,7 +77,6 @@ class CKidnapMonitor {
     /** A run of disagreeing steps is open: do not map from this pose. */
     bool suspicious() const { return bad_ > 0; }
     size_t resets() const { return resets_; }
-    const TKidnapOptions& options() const { return o_; }
 
   private:
     void endRun() {

@@ -93,10 +93,6 @@ class CSlipAwareMotion {
     std::optional<mrpt::poses::CPose2D> m_rate;  //!< m/s, m/s, rad/s (robot frame)
 };
 
-/** The odometry increment carried by an action collection, if any. */
-std::optional<mrpt::poses::CPose2D> odometryIncrement(
-    const mrpt::obs::CActionCollection* acts);
-
 /** The Gaussian pose change of the action's odometry increment, with the
  * noise options the action was built with (its MRPT Gaussian-model options);
  * nullopt without a movement. One Cholesky per step. */

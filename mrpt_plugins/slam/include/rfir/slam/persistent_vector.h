@@ -34,11 +34,6 @@ class CPersistentVector {
         while (i >= capacity()) grow();
         root_ = setRec(root_, shift_, i, std::move(v));
     }
-    /** Nodes allocated so far by all vectors of this type (for tests). */
-    static size_t& nodeAllocations() {
-        static size_t n = 0;
-        return n;
-    }
 
   private:
     struct Node {
@@ -61,7 +56,6 @@ class CPersistentVector {
     }
     static NodePtr setRec(const NodePtr& n, unsigned shift, size_t i, ElemPtr v) {
         auto c = n ? std::make_shared<Node>(*n) : std::make_shared<Node>();
-        ++nodeAllocations();
         const size_t k = (i >> shift) & (FANOUT - 1);
         if (shift == 0)
             c->vals[k] = std::move(v);

@@ -29,7 +29,7 @@ struct TSlamConfig {
     std::shared_ptr<TTagMapSettings> tagmap;
     /** Seed of every random draw of the run (--seed), not an INI key. */
     uint64_t seed = 1;
-    TMethod method() const { return parseMethod(slam.method); }
+    TMethod method() const { return slam.method; }
 };
 
 /** Loads and checks every section; `methodOverride` (from --method) replaces

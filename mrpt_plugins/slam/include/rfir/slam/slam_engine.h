@@ -55,7 +55,6 @@ class CSlamEngine {
         static const std::vector<double> none;
         return none;
     }
-    size_t resets() const { return resetTimes().size(); }
 };
 
 /** The engine for cfg.slam.method; `hdr` names range-bearing landmarks. */

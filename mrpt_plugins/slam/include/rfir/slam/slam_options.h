@@ -18,17 +18,16 @@ enum class TMethod {
 TMethod parseMethod(const std::string& name);  //!< throws naming [slam] method
 std::string methodName(TMethod m);
 
-/** Resampling scheme by name: MRPT's enum names (prSystematic, ...) or the
- * short ones (multinomial, residual, stratified, systematic). */
-mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm parseResampling(
-    const std::string& name);
-std::string resamplingName(mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm r);
-
 /** INI section [slam]. */
 struct TSlamOptions : public mrpt::config::CLoadableOptions {
-    std::string method = "pf";
+    /** Where the tags are updated from with a weigh-first policy. */
+    enum class TTagUpdatePose { Posterior, Predicted };
+
+    // Enums parsed once, here at load; saveToConfigFile writes their names.
+    TMethod method = TMethod::PF;
     unsigned robot_particles = 500;  //!< M (SPEC section 4)
-    std::string resampling = "systematic";
+    mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
+        mrpt::bayes::CParticleFilter::prSystematic;
     /** Resample when the normalised effective sample size drops below this;
      * 1 resamples on every step, as the seeds' algorithms do. */
     double resample_ess = 0.5;
@@ -36,7 +35,7 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
     double start_std_phi = 0.0;  //!< rad
     /** PF/PS with a weigh-first policy: the robot pose the tags are updated
      * with, "posterior" (after weighing) or "predicted" (before). */
-    std::string tag_update_pose = "posterior";
+    TTagUpdatePose tag_update_pose = TTagUpdatePose::Posterior;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;

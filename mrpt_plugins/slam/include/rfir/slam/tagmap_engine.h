@@ -25,7 +25,6 @@ class CSlamEngine;
 /** INI sections of the tag map: [tagmap] (insertion: estimator, particles,
  * lag, ...) and [tagmap_likelihood] (detection model, robot_update, ...). */
 std::set<std::string> tagMapSections();
-std::string joinSections(const std::set<std::string>& s);
 
 /** The tag map's options plus how the robot filter uses the map. */
 struct TTagMapSettings;

@@ -104,8 +104,11 @@ void CIREmitterMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const 
 
 CIREmitterMap::TMapDefinition::TMapDefinition() = default;
 
+// Errors are kept and raised at creation: MRPT leaks the definition when this
+// throws (see CRFIDTagParticleMap::TMapDefinition).
 void CIREmitterMap::TMapDefinition::loadFromConfigFile_map_specific(
-    const mrpt::config::CConfigFileBase& c, const std::string& prefix) {
+    const mrpt::config::CConfigFileBase& c, const std::string& prefix) try {
+    loadError = nullptr;
     const std::string s = prefix + "_creationOpts";
     const rfir::ini::CIniSection s_sec(c, s, {"emitter_file"});
     emitterFile = s_sec.getString("emitter_file", "");
@@ -116,6 +119,8 @@ void CIREmitterMap::TMapDefinition::loadFromConfigFile_map_specific(
         if (!dir.empty()) emitterFile = dir + "/" + emitterFile;
     }
     likelihoodOpts.loadFromConfigFile(c, prefix + "_likelihoodOpts");
+} catch (...) {
+    loadError = std::current_exception();
 }
 
 void CIREmitterMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& o) const {
@@ -126,6 +131,7 @@ void CIREmitterMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& 
 mrpt::maps::CMetricMap* CIREmitterMap::internal_CreateFromMapDefinition(
     const mrpt::maps::TMetricMapInitializer& d) {
     const auto& def = dynamic_cast<const CIREmitterMap::TMapDefinition&>(d);
+    if (def.loadError) std::rethrow_exception(def.loadError);
     // Owned until returned: a bad emitter file throws (found by fuzz_ini: the
     // map leaked).
     auto m = std::make_unique<CIREmitterMap>();

@@ -146,8 +146,13 @@ void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) 
 
 CRFIDTagParticleMap::TMapDefinition::TMapDefinition() = default;
 
+// MRPT 2.5.8's TSetOfMetricMapInitializers::loadFromConfigFile holds the new
+// definition in a raw pointer while this runs and leaks it when this throws:
+// the error is kept and raised by internal_CreateFromMapDefinition, which every
+// loader of [MetricMap] reaches next (CMultiMetricMap).
 void CRFIDTagParticleMap::TMapDefinition::loadFromConfigFile_map_specific(
-    const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
+    const mrpt::config::CConfigFileBase& source, const std::string& prefix) try {
+    loadError = nullptr;
     const std::string creation = prefix + "_creationOpts";
     if (source.sectionExists(creation)) {
         // MRPT reads its generic map options from the same section.
@@ -162,6 +167,8 @@ void CRFIDTagParticleMap::TMapDefinition::loadFromConfigFile_map_specific(
     }
     insertionOpts.loadFromConfigFile(source, prefix + "_insertOpts");
     likelihoodOpts.loadFromConfigFile(source, prefix + "_likelihoodOpts");
+} catch (...) {
+    loadError = std::current_exception();
 }
 
 void CRFIDTagParticleMap::TMapDefinition::dumpToTextStream_map_specific(
@@ -174,6 +181,7 @@ void CRFIDTagParticleMap::TMapDefinition::dumpToTextStream_map_specific(
 mrpt::maps::CMetricMap* CRFIDTagParticleMap::internal_CreateFromMapDefinition(
     const mrpt::maps::TMetricMapInitializer& d) {
     const auto& def = dynamic_cast<const CRFIDTagParticleMap::TMapDefinition&>(d);
+    if (def.loadError) std::rethrow_exception(def.loadError);
     // Owned until returned: a prior file that is refused must not leak the map.
     auto m = std::make_unique<CRFIDTagParticleMap>();
     m->insertionOptions = def.insertionOpts;

@@ -12,6 +12,7 @@
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/math/TPose2D.h>
 
+#include <exception>
 #include <optional>
 #include <string>
 #include <vector>
@@ -113,6 +114,9 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
      * folder, when the INI is a file); empty: set later by the program. */
     std::string emitterFile;
     rfir::maps::CIREmitterMap::TLikelihoodOptions likelihoodOpts;
+    /** A refused INI value, raised when the map is created (see
+     * loadFromConfigFile_map_specific). */
+    std::exception_ptr loadError;
     MAP_DEFINITION_END(CIREmitterMap)
 
   protected:

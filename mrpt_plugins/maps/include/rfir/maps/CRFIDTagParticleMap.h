@@ -12,6 +12,7 @@
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cstdint>
+#include <exception>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -245,6 +246,9 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     std::string priorMapFile;  //!< creationOpts prior_map_file ("": none)
     rfir::maps::CRFIDTagParticleMap::TInsertionOptions insertionOpts;
     rfir::maps::CRFIDTagParticleMap::TLikelihoodOptions likelihoodOpts;
+    /** A refused INI value, raised when the map is created (see
+     * loadFromConfigFile_map_specific). */
+    std::exception_ptr loadError;
     MAP_DEFINITION_END(CRFIDTagParticleMap)
 
   protected:

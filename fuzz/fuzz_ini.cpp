@@ -23,6 +23,8 @@
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
 
+#include <cctype>
+
 namespace {
 const char* kEmitters =
     "emitter 12 1.0 1.0 2.5\nemitter 23 3.0 1.0 2.5\nemitter 5 2.0 3.0 2.5\n";
@@ -34,16 +36,18 @@ void loadMaps(std::string text) {
     for (size_t p = 0; (p = text.find(tag, p)) != std::string::npos; p += file.size())
         text.replace(p, tag.size(), file);
     mrpt::config::CConfigFileMemory c(text);
-    // MRPT 2.5.8 takes <class>_count = -1 as 4e9 maps (any class, its own
-    // too) and runs until memory is gone: docs/fuzzing.md, "MRPT bugs".
-    // rfir-localize refuses such a count; MRPT's apps do not.
+    // MRPT 2.5.8 counts <class>_count = -1 (keys in any case) as 4e9 map
+    // definitions, for any class: a hang (docs/hardening.md, "MRPT's map
+    // loader"). rfir-localize refuses such a count; MRPT's apps do not.
     std::vector<std::string> keys;
     c.getAllKeys("MetricMap", keys);
-    for (const auto& k : keys)
+    for (auto k : keys) {
+        for (auto& ch : k) ch = char(std::tolower(static_cast<unsigned char>(ch)));
         if (k.size() > 6 && k.compare(k.size() - 6, 6, "_count") == 0) {
             const long n = c.read_int("MetricMap", k, 0);
             if (n < 0 || n > 16) return;
         }
+    }
     mrpt::maps::TSetOfMetricMapInitializers inits;
     inits.loadFromConfigFile(c, "MetricMap");
     mrpt::maps::CMultiMetricMap mm;

@@ -22,8 +22,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
-
-#include <cctype>
+#include <mrpt/system/string_utils.h>
 
 namespace {
 const char* kEmitters =
@@ -38,12 +37,13 @@ void loadMaps(std::string text) {
     mrpt::config::CConfigFileMemory c(text);
     // MRPT 2.5.8 counts <class>_count = -1 (keys in any case) as 4e9 map
     // definitions, for any class: a hang (docs/hardening.md, "MRPT's map
-    // loader"). rfir-localize refuses such a count; MRPT's apps do not.
+    // loader"). rfir-localize refuses such a count; MRPT's apps do not. Over
+    // 16 maps adds no code path, only time per input.
     std::vector<std::string> keys;
     c.getAllKeys("MetricMap", keys);
-    for (auto k : keys) {
-        for (auto& ch : k) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-        if (k.size() > 6 && k.compare(k.size() - 6, 6, "_count") == 0) {
+    for (const auto& k : keys) {
+        const std::string lk = mrpt::system::lowerCase(k);
+        if (lk.size() > 6 && lk.compare(lk.size() - 6, 6, "_count") == 0) {
             const long n = c.read_int("MetricMap", k, 0);
             if (n < 0 || n > 16) return;
         }

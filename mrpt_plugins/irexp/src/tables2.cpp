@@ -158,15 +158,29 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
     const std::vector<int> Ms = opt.quick ? std::vector<int>{50, 500}
                                           : std::vector<int>{25, 50, 100, 200, 500, 1000};
     struct TVariant {
-        std::string name;
+        std::string name, plotLabel;  // the table's column, the plot's legend
         std::vector<std::string> sets;
     };
-    const TVariant vars[] = {
-        {"uniform prior, no resetting (thesis)",
-         {"localization.start_from_reading=false",
-          "localization.sensor_resetting=false"}},
-        {"uniform prior + sensor resetting", {"localization.start_from_reading=false"}},
-        {"start from the first unique reading + resetting (default)", {}}};
+    // The thesis' start has neither resetting nor the robust layer: the
+    // lost-track recovery redraws every particle from a reading, a resetting
+    // of its own, so it is off (gate_max_std = 0) wherever the column says so.
+    const std::string noRobust[] = {
+        "localization.gate_max_std=0",
+        "MetricMap_irEmitterMap_00_likelihoodOpts.volt_outlier_weight=0"};
+    const std::vector<TVariant> vars = {
+        {"uniform prior, no resetting, no robust layer (thesis)",
+         "thesis",
+         {"localization.start_from_reading=false", "localization.sensor_resetting=false",
+          noRobust[0], noRobust[1]}},
+        {"uniform prior + sensor resetting, no robust layer",
+         "uniform + resetting",
+         {"localization.start_from_reading=false", noRobust[0], noRobust[1]}},
+        {"uniform prior + sensor resetting + robust layer",
+         "uniform + resetting + robust",
+         {"localization.start_from_reading=false"}},
+        {"start from the first unique reading + resetting + robust layer (default)",
+         "default",
+         {}}};
     std::ostringstream md;
     md << "## How many particles a start needs\n\nLattice room, one loop, unknown start, "
        << opt.sweepSeeds
@@ -175,12 +189,14 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
           "mm.\n\n"
        << "| M |";
     for (const auto& v : vars) md << " " << v.name << " |";
-    md << "\n|---|---|---|---|\n";
-    std::vector<rfir::eval::TSeries> series(3);
-    for (size_t i = 0; i < 3; i++) series[i].label = vars[i].name;
+    md << "\n|---|";
+    for (size_t i = 0; i < vars.size(); i++) md << "---|";
+    md << "\n";
+    std::vector<rfir::eval::TSeries> series(vars.size());
+    for (size_t i = 0; i < vars.size(); i++) series[i].label = vars[i].plotLabel;
     for (int M : Ms) {
         md << "| " << M << " |";
-        for (size_t i = 0; i < 3; i++) {
+        for (size_t i = 0; i < vars.size(); i++) {
             TRunSpec sp{"sim_ir_loop.ini"};
             sp.simSets = {"trajectory.laps=1", "trajectory.spots=0"};
             sp.locSets = vars[i].sets;

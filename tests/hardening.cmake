@@ -1,7 +1,7 @@
 # Corrupt rawlogs: the bounded reader, MRPT's classes guarded, the reproducers
 # of issue 15 through every program, and a truncation / byte-flip sweep.
 rfir_add_test(test_rawlog_hardening
-  SOURCES test_rawlog_bounded.cpp test_rawlog_hardening.cpp
+  SOURCES test_rawlog_bounded.cpp test_rawlog_hardening.cpp test_checked_classes.cpp
   LIBS rfir_appcommon)
 foreach(prog rfir-import rfir-slam rfir-eval rfir-localize)
   if(TARGET ${prog})

@@ -181,6 +181,17 @@ TEST(RawlogHardening, TheMrptCrashIsNamed) {
                        "estimationMethod");
 }
 
+TEST(RawlogHardening, AnUncheckedMrptClassIsRefusedByName) {
+    // fuzz_rawlog's find: a frame member of an MRPT class rfir does not guard,
+    // with a corrupt count, took rfir-import to 23 GB before it was refused.
+    TmpDir d;
+    const auto f =
+        kSrc + "/tests/data/fuzz_crashes/rawlog/oom_beacon_ranges_count.rawlog";
+    for (const auto& prog : kPrograms)
+        expectCleanFailure(prog, f, d,
+                           "'mrpt::obs::CObservationBeaconRanges', an MRPT class");
+}
+
 TEST(RawlogHardening, CutGzipTrailerIsAnErrorNamingTheEntry) {
     TmpDir d;
     const auto bytes = readFile(smallRawlog(d));

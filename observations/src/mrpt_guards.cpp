@@ -2,6 +2,8 @@
 #include <rfir/obs/bounded_read.h>
 #include <rfir/obs/mrpt_guards.h>
 
+#include "peek_archive.h"
+
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
@@ -23,61 +25,10 @@
 
 namespace rfir::obs {
 namespace {
+using detail::CPeekArchive;
+using detail::peekClassName;
+using detail::refuse;
 using mrpt::serialization::CArchive;
-
-/** Reads ahead from an archive, then serves the bytes read ahead again before
- * the rest: MRPT's parser sees the object exactly as stored. */
-class CPeekArchive : public CArchive {
-  public:
-    explicit CPeekArchive(CArchive& in) : in_(in) {}
-    template <class T>
-    T peek() {
-        T v;
-        peekBytes(&v, sizeof(v));
-        return v;
-    }
-    void peekBytes(void* b, size_t n) {
-        const size_t at = buf_.size();
-        buf_.resize(at + n);
-        in_.ReadBuffer(buf_.data() + at, n);
-        std::memcpy(b, buf_.data() + at, n);
-    }
-
-  protected:
-    size_t write(const void*, size_t) override {
-        throw std::logic_error("CPeekArchive: read only");
-    }
-    size_t read(void* b, size_t n) override {
-        size_t k = 0;
-        if (pos_ < buf_.size()) {
-            k = std::min(n, buf_.size() - pos_);
-            std::memcpy(b, buf_.data() + pos_, k);
-            pos_ += k;
-        }
-        if (k < n) k += in_.ReadBuffer(static_cast<uint8_t*>(b) + k, n - k);
-        return k;
-    }
-
-  private:
-    CArchive& in_;
-    std::vector<uint8_t> buf_;
-    size_t pos_ = 0;
-};
-
-[[noreturn]] void refuse(const std::string& cls, const std::string& why) {
-    throw std::runtime_error(cls + ": " + why +
-                             " (corrupt data; refused before MRPT parses it)");
-}
-
-/** The class name of the serialized object that follows (MRPT's header: a
- * length byte, 0x80 set in the current format, then the name). */
-std::string peekClassName(CPeekArchive& a, const char* cls) {
-    const auto len = a.peek<uint8_t>();
-    if (!(len & 0x80)) refuse(cls, "object in MRPT's pre-2008 format");
-    std::string name(len & 0x7F, '\0');
-    if (!name.empty()) a.peekBytes(name.data(), name.size());
-    return name;
-}
 
 constexpr const char* kArm = "mrpt::obs::CActionRobotMovement2D";
 
@@ -303,7 +254,8 @@ class CGuardedRobotMovement2D : public mrpt::obs::CActionRobotMovement2D {
  * CActionCollection::serializeFrom (a null deepcopy_poly_ptr is cloned). */
 template <class T>
 typename T::Ptr readMember(CArchive& a, const char* cls, uint32_t i) {
-    const auto o = a.ReadObject();
+    const auto o =
+        readCheckedObject(a, std::string(cls) + ": object " + std::to_string(i));
     auto t = std::dynamic_pointer_cast<T>(o);
     if (!t)
         refuse(cls, "object " + std::to_string(i) + " is " +
@@ -360,22 +312,37 @@ const mrpt::rtti::TRuntimeClassId* guardId() {
         CLASS_ID(BASE)->getBaseClass};
     return &id;
 }
+
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& guardIds() {
+    using namespace mrpt::obs;
+    static const std::vector<const mrpt::rtti::TRuntimeClassId*> ids = {
+        guardId<CGuardedRobotMovement2D, CActionRobotMovement2D>(),
+        guardId<CGuardedActionCollection, CActionCollection>(),
+        guardId<CGuardedSensoryFrame, CSensoryFrame>(),
+        guardId<CGuardedOdometry, CObservationOdometry>(),
+        guardId<CGuardedBearingRange, CObservationBearingRange>(),
+        guardId<CGuardedRFID, CObservationRFID>()};
+    return ids;
+}
 }  // namespace
+
+const std::vector<std::string>& detail::guardedClassNames() {
+    static const auto names = [] {
+        std::vector<std::string> v;
+        for (const auto* id : guardIds()) v.emplace_back(id->className);
+        return v;
+    }();
+    return names;
+}
 
 void registerMrptGuards() {
     static const bool done = [] {
-        using namespace mrpt::obs;
         // MRPT warns on std::cerr that a name is registered again: that is the
         // point here, so the warning is kept out of every program's output.
         // The lookup makes MRPT process its queue of pending registrations now.
         std::ostringstream quiet;
         auto* const old = std::cerr.rdbuf(quiet.rdbuf());
-        for (const auto* id : {guardId<CGuardedRobotMovement2D, CActionRobotMovement2D>(),
-                               guardId<CGuardedActionCollection, CActionCollection>(),
-                               guardId<CGuardedSensoryFrame, CSensoryFrame>(),
-                               guardId<CGuardedOdometry, CObservationOdometry>(),
-                               guardId<CGuardedBearingRange, CObservationBearingRange>(),
-                               guardId<CGuardedRFID, CObservationRFID>()}) {
+        for (const auto* id : guardIds()) {
             mrpt::rtti::registerClass(id);
             mrpt::rtti::findRegisteredClass(id->className);
         }

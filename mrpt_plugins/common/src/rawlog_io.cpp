@@ -1,4 +1,5 @@
 #include <rfir/common/rawlog_io.h>
+#include <rfir/obs/mrpt_guards.h>
 #include <rfir/obs/registerAllClasses.h>
 
 #include <mrpt/obs/CObservationOdometry.h>
@@ -192,8 +193,10 @@ mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject() {
         CPushbackStream s(in_, first);
         // Counts read by the classes are checked against the bytes left.
         rfir::obs::CBytesLeftScope scope(&s);
+        // And no class whose reader allocates from unchecked counts.
+        rfir::obs::CCheckedClassesScope checked;
         auto ar = mrpt::serialization::archiveFrom(s);
-        return ar.ReadObject();
+        return rfir::obs::readCheckedObject(ar, "the entry");
     } catch (const std::exception& e) {
         std::string msg = innermostError(e.what());
         if (msg.size() > 300) msg = msg.substr(0, 300) + "...";

@@ -164,17 +164,17 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
     // The thesis' start has neither resetting nor the robust layer: the
     // lost-track recovery redraws every particle from a reading, a resetting
     // of its own, so it is off (gate_max_std = 0) wherever the column says so.
-    const std::string noRobust[] = {
-        "localization.gate_max_std=0",
-        "MetricMap_irEmitterMap_00_likelihoodOpts.volt_outlier_weight=0"};
+    const auto noRobust = [](std::vector<std::string> sets) {
+        sets.push_back("localization.gate_max_std=0");
+        sets.push_back(kLik + "volt_outlier_weight=0");
+        return sets;
+    };
     const std::vector<TVariant> vars = {
-        {"uniform prior, no resetting, no robust layer (thesis)",
-         "thesis",
-         {"localization.start_from_reading=false", "localization.sensor_resetting=false",
-          noRobust[0], noRobust[1]}},
-        {"uniform prior + sensor resetting, no robust layer",
-         "uniform + resetting",
-         {"localization.start_from_reading=false", noRobust[0], noRobust[1]}},
+        {"uniform prior, no resetting, no robust layer (thesis)", "thesis",
+         noRobust({"localization.start_from_reading=false",
+                   "localization.sensor_resetting=false"})},
+        {"uniform prior + sensor resetting, no robust layer", "uniform + resetting",
+         noRobust({"localization.start_from_reading=false"})},
         {"uniform prior + sensor resetting + robust layer",
          "uniform + resetting + robust",
          {"localization.start_from_reading=false"}},

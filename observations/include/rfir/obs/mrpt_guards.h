@@ -8,8 +8,14 @@
  * guards replace
  * those classes in MRPT's class registry by subclasses that check the fields
  * first, then let MRPT parse the same bytes; objects keep MRPT's class (and
- * are written exactly as before). See docs/hardening.md. */
+ * are written exactly as before). Any other MRPT class, whose reader is not
+ * checked, is refused by name inside a CCheckedClassesScope (rfir's own
+ * rawlog reader). See docs/hardening.md. */
 #pragma once
+
+#include <mrpt/serialization/CArchive.h>
+
+#include <string>
 
 namespace rfir::obs {
 /** Registers the guards (idempotent; called by registerAllClasses). */
@@ -21,4 +27,34 @@ struct TMrptReadBounds {
     static constexpr unsigned kMaxThrunParticles = 100000;
     static constexpr unsigned kMaxMeasurements = 1 << 20;  //!< bearing-range
 };
+
+/** While one is alive on this thread, the objects read through
+ * readCheckedObject (the members of frames and action collections, and the
+ * entries of a rawlog read by rfir::common::CRawlogReader) must be of a
+ * class whose reader is checked: a guarded MRPT class or one of rfir's. Any
+ * other MRPT class is refused by name before MRPT reads it, since MRPT's
+ * readers allocate from counts they do not check (a corrupt one took 23 GB:
+ * docs/hardening.md), unless the environment variable
+ * RFIR_TRUST_MRPT_CLASSES lists it (comma-separated, full or short names;
+ * "*" for all). Without a scope (MRPT's own programs with the plugin) every
+ * registered class is read, as MRPT does. */
+class CCheckedClassesScope {
+  public:
+    CCheckedClassesScope();
+    ~CCheckedClassesScope();
+    CCheckedClassesScope(const CCheckedClassesScope&) = delete;
+    CCheckedClassesScope& operator=(const CCheckedClassesScope&) = delete;
+
+  private:
+    bool prev_;
+};
+
+/** The environment variable of CCheckedClassesScope. */
+inline constexpr const char* kTrustClassesEnv = "RFIR_TRUST_MRPT_CLASSES";
+
+/** Reads one object (MRPT's ReadObject), first refusing, inside a
+ * CCheckedClassesScope, a class not checked nor trusted; `where` names the
+ * container in the error. */
+mrpt::serialization::CSerializable::Ptr readCheckedObject(
+    mrpt::serialization::CArchive& in, const std::string& where);
 }  // namespace rfir::obs

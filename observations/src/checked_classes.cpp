@@ -1,0 +1,67 @@
+/* rfir: which classes a rawlog read by rfir may hold (mrpt_guards.h). */
+#include <rfir/obs/mrpt_guards.h>
+
+#include "peek_archive.h"
+
+#include <mrpt/rtti/CObject.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace rfir::obs {
+namespace {
+thread_local bool tlChecked = false;
+
+/** Whether RFIR_TRUST_MRPT_CLASSES lists `name` (full, or after its last "::"),
+ * or is "*". */
+bool trusted(const std::string& name) {
+    const char* env = std::getenv(kTrustClassesEnv);
+    if (!env) return false;
+    const std::string list = env;
+    const auto shortName = name.substr(name.rfind(':') + 1);  // npos + 1 == 0
+    for (size_t b = 0; b <= list.size();) {
+        auto e = list.find(',', b);
+        if (e == std::string::npos) e = list.size();
+        auto item = list.substr(b, e - b);
+        item.erase(0, item.find_first_not_of(" \t"));
+        item.erase(item.find_last_not_of(" \t") + 1);
+        if (item == "*" || item == name || item == shortName) return true;
+        b = e + 1;
+    }
+    return false;
+}
+
+/** Whether the reader of class `name` is rfir's or checked by a guard. An
+ * unregistered name is left to MRPT, which refuses it ("nullptr" included:
+ * MRPT reads it as an empty pointer, which the containers refuse). */
+bool checked(const std::string& name) {
+    if (name.rfind("rfir::", 0) == 0 || name == "nullptr") return true;
+    const auto& g = detail::guardedClassNames();
+    if (std::find(g.begin(), g.end(), name) != g.end()) return true;
+    return mrpt::rtti::findRegisteredClass(name) == nullptr;
+}
+}  // namespace
+
+CCheckedClassesScope::CCheckedClassesScope() : prev_(tlChecked) {
+    tlChecked = true;
+}
+
+CCheckedClassesScope::~CCheckedClassesScope() {
+    tlChecked = prev_;
+}
+
+mrpt::serialization::CSerializable::Ptr readCheckedObject(
+    mrpt::serialization::CArchive& in, const std::string& where) {
+    if (!tlChecked) return in.ReadObject();
+    detail::CPeekArchive a(in);
+    const auto name = detail::peekClassName(a, where);
+    if (!checked(name) && !trusted(name))
+        throw std::runtime_error(
+            where + " is a '" + name +
+            "', an MRPT class whose reader rfir does not check (a corrupt count in "
+            "it can take all memory): refused; to read it unchecked, set " +
+            kTrustClassesEnv + "=" + name.substr(name.rfind(':') + 1) +
+            " (docs/hardening.md)");
+    return a.ReadObject();
+}
+}  // namespace rfir::obs

@@ -132,3 +132,37 @@ TEST(CheckedClasses, WithoutAScopeMrptReadsAsBefore) {
         EXPECT_NE(std::string(e.what()).find("CObservationComment"), std::string::npos);
     }
 }
+
+TEST(CheckedClasses, TheClassMrptResolvesIsTheOneChecked) {
+    // MRPT finds a class by the part of the name after the last "::" as well:
+    // a file naming "rfir::x::CObservationComment" gets MRPT's comment
+    // (fuzz_rawlog found "rfir::obs::Cmrpt::math::CPolygon", a 57 GB read).
+    rfir::obs::registerAllClasses();
+    TTrust none(nullptr);
+    mrpt::obs::CSensoryFrame sf;
+    sf.insert(mrpt::obs::CObservationComment::Create());
+    mrpt::io::CMemoryStream m;
+    auto w = mrpt::serialization::archiveFrom(m);
+    w << sf;
+    const auto* p = static_cast<const char*>(m.getRawBufferData());
+    std::string b(p, p + m.getTotalBytesCount());
+    const std::string from = "mrpt::obs::CObservationComment",
+                      to = "rfir::x::CObservationComment";
+    const auto at = b.find(from);
+    ASSERT_NE(at, std::string::npos);
+    b.replace(at, from.size(), to);
+    b[at - 1] = char(0x80 | to.size());
+    mrpt::io::CMemoryStream in;
+    in.Write(b.data(), b.size());
+    in.Seek(0);
+    auto r = mrpt::serialization::archiveFrom(in);
+    rfir::obs::CCheckedClassesScope scope;
+    try {
+        r.ReadObject();
+        FAIL() << "an aliased MRPT class was read inside the scope";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("'mrpt::obs::CObservationComment'"),
+                  std::string::npos)
+            << e.what();
+    }
+}

@@ -31,14 +31,14 @@ bool trusted(const std::string& name) {
     return false;
 }
 
-/** Whether the reader of class `name` is rfir's or checked by a guard. An
- * unregistered name is left to MRPT, which refuses it ("nullptr" included:
- * MRPT reads it as an empty pointer, which the containers refuse). */
-bool checked(const std::string& name) {
-    if (name.rfind("rfir::", 0) == 0 || name == "nullptr") return true;
+/** Whether the reader of registered class `cls` is rfir's or checked by a
+ * guard. The name MRPT resolves is the one that counts, not the file's: MRPT
+ * also finds a class by the part after the last "::", so a file's
+ * "rfir::obs::Cmrpt::math::CPolygon" is read as MRPT's CPolygon (fuzz find). */
+bool checked(const std::string& cls) {
+    if (cls.rfind("rfir::", 0) == 0) return true;
     const auto& g = detail::guardedClassNames();
-    if (std::find(g.begin(), g.end(), name) != g.end()) return true;
-    return mrpt::rtti::findRegisteredClass(name) == nullptr;
+    return std::find(g.begin(), g.end(), cls) != g.end();
 }
 }  // namespace
 
@@ -54,7 +54,15 @@ mrpt::serialization::CSerializable::Ptr readCheckedObject(
     mrpt::serialization::CArchive& in, const std::string& where) {
     if (!tlChecked) return in.ReadObject();
     detail::CPeekArchive a(in);
-    const auto name = detail::peekClassName(a, where);
+    const auto stored = detail::peekClassName(a, where);
+    // "nullptr" is read as an empty pointer, which the containers refuse.
+    if (stored == "nullptr") return a.ReadObject();
+    const auto* id = mrpt::rtti::findRegisteredClass(stored);
+    if (!id)
+        throw std::runtime_error(where + " names the class '" + stored +
+                                 "', which is not registered (corrupt data, or a "
+                                 "class of a library this program does not load)");
+    const std::string name = id->className;
     if (!checked(name) && !trusted(name))
         throw std::runtime_error(
             where + " is a '" + name +

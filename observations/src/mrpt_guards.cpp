@@ -36,7 +36,11 @@ constexpr const char* kArm = "mrpt::obs::CActionRobotMovement2D";
  * (estimationMethod, the odometry pose, the motion model and its particle
  * count), with the layout MRPT 2.5.8 writes; older versions: the method. */
 void checkRobotMovement2D(CPeekArchive& a, uint8_t version) {
-    if (version < 2) return;  // pose PDF first: MRPT reads it as an object
+    // Versions 0 and 1 start with the pose change, which MRPT reads as an
+    // object of any class, unchecked: not read.
+    if (version < 2)
+        refuse(kArm, "version " + std::to_string(version) +
+                         " (the pose change as an object of any class) is not read");
     const auto method = a.peek<int32_t>();
     using ARM = mrpt::obs::CActionRobotMovement2D;
     if (method == ARM::emScan2DMatching) {

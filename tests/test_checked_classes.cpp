@@ -96,6 +96,18 @@ TEST(CheckedClasses, TrustedByShortOrFullNameOrStarIsRead) {
         TTrust t(v);
         EXPECT_EQ(beaconsIn(p), 3u) << v;
     }
+    // Read, but not used: said once, not dropped silently.
+    {
+        TTrust t("*");
+        testing::internal::CaptureStderr();
+        beaconsIn(p);
+        const auto err = testing::internal::GetCapturedStderr();
+        const std::string w =
+            "observations of class mrpt::obs::CObservationBeaconRanges (first one "
+            "labelled 'UWB') are kept in each frame but not used";
+        EXPECT_NE(err.find(w), std::string::npos) << err;
+        EXPECT_EQ(err.find(w), err.rfind(w)) << err;
+    }
     // A list without it, or a mere prefix of the name, does not trust it.
     for (const char* v : {"CObservationComment", "CObservationBeacon", ""}) {
         TTrust t(v);

@@ -204,7 +204,8 @@ TEST(SimOdometry, NoiseStatisticsMatchTheModel) {
     c.trajectory.rotation = TTrajectoryConfig::Rotation::Spin;
     c.trajectory.spinRate = 0.5;
     c.trajectory.waypoints = 40;
-    c.odometry = {0.01, 0.02, 0.005, 0, 0, 0};  // no biases
+    c.odometry.scaleSigma = c.odometry.rotScaleSigma = 0;  // no biases
+    c.odometry.headingDriftSigma = 0;
     const auto out = simulate(c, 31);
     double sx = 0, sy = 0, sp = 0;
     size_t n = 0;
@@ -230,7 +231,9 @@ TEST(SimOdometry, NoiseStatisticsMatchTheModel) {
 TEST(SimOdometry, BiasesAreSystematic) {
     TSimConfig c;
     c.trajectory.rotation = TTrajectoryConfig::Rotation::Follow;
-    c.odometry = {0, 0, 0, 0.02, 0.02, 0.01};
+    c.odometry.kXY = c.odometry.kPhiRot = c.odometry.kPhiXY = 0;  // biases only
+    c.odometry.scaleSigma = c.odometry.rotScaleSigma = 0.02;
+    c.odometry.headingDriftSigma = 0.01;
     c.maxDuration = 60;
     const auto out = simulate(c, 41);
     EXPECT_NE(out.scaleBias, 0);

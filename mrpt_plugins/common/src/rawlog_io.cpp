@@ -297,6 +297,18 @@ void CRawlogReader::addMrptRFID(TRawlogStep& st, const CObservationRFID& o) {
     st.rfid = r;
 }
 
+void CRawlogReader::warnUnused(const CObservation& o) {
+    // MRPT's RFID records are read below; the header is no sensor.
+    if (dynamic_cast<const CObservationRFID*>(&o) ||
+        dynamic_cast<const rfir::obs::CObservationLogHeader*>(&o))
+        return;
+    const std::string cls = o.GetRuntimeClass()->className;
+    if (warnedClasses_.insert(cls).second)
+        std::cerr << "warning: " << path_ << ": observations of class " << cls
+                  << " (first one labelled '" << o.sensorLabel
+                  << "') are kept in each frame but not used by rfir's methods\n";
+}
+
 bool CRawlogReader::next(TRawlogStep& st) {
     CActionCollection::Ptr acts;
     CSensoryFrame::Ptr sf;
@@ -324,6 +336,8 @@ bool CRawlogReader::next(TRawlogStep& st) {
             st.ir = i;
         else if (auto b = std::dynamic_pointer_cast<CObservationBearingRange>(o))
             st.rb = b;
+        else
+            warnUnused(*o);
     }
     for (const auto& o : *sf)
         if (auto m = std::dynamic_pointer_cast<CObservationRFID>(o)) addMrptRFID(st, *m);

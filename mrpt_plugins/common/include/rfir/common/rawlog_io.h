@@ -91,6 +91,8 @@ class CRawlogReader {
                   mrpt::obs::CSensoryFrame::Ptr& sf);
     bool nextFlatInstant(mrpt::obs::CSensoryFrame::Ptr& sf);
     void addMrptRFID(TRawlogStep& st, const mrpt::obs::CObservationRFID& o);
+    /** Warns once per class of an observation no method uses. */
+    void warnUnused(const mrpt::obs::CObservation& o);
     rfir::obs::TRFIDReader readerOf(const mrpt::obs::CObservationRFID& o,
                                     const std::string& id);
     std::string path_;
@@ -105,7 +107,7 @@ class CRawlogReader {
         pending_;
     mrpt::obs::CObservation::Ptr pendingObs_;           //!< observation-only: read ahead
     std::optional<mrpt::poses::CPose2D> lastOdometry_;  //!< observation-only
-    std::set<std::string> warnedReaders_;
+    std::set<std::string> warnedReaders_, warnedClasses_;
 };
 
 }  // namespace rfir::common

@@ -212,6 +212,19 @@ TEST(MrptGuards, HugeThrunParticleCountIsRefused) {
     b[at + 3] = 0x7F;
     const auto e = errorOf([&] { readBack(b); });
     EXPECT_NE(e.find("particle count"), std::string::npos) << e;
+    // Version 3 (fuzz_rawlog): 5 floats before the count, and MRPT takes any
+    // model but 0 for Thrun's.
+    b[methodOffset() - 1] = 3;
+    b.erase(b.begin() + at - 4, b.begin() + at);
+    const auto e3 = errorOf([&] { readBack(b); });
+    EXPECT_NE(e3.find("particle count"), std::string::npos) << e3;
+    b[at - 4 - 24] = 0xF7;  // model 247
+    const auto e4 = errorOf([&] { readBack(b); });
+    EXPECT_NE(e4.find("motion model 247"), std::string::npos) << e4;
+    // Versions 0 and 1 start with a pose PDF of any class: refused.
+    b[methodOffset() - 1] = 1;
+    const auto e1 = errorOf([&] { readBack(b); });
+    EXPECT_NE(e1.find("version 1"), std::string::npos) << e1;
 }
 
 TEST(MrptGuards, HugeContainerCountsAreRefused) {

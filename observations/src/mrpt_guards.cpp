@@ -32,7 +32,7 @@ using mrpt::serialization::CArchive;
 
 constexpr const char* kArm = "mrpt::obs::CActionRobotMovement2D";
 
-/** Checks the fields MRPT trusts in CActionRobotMovement2D, versions 4 to 7
+/** Checks the fields MRPT trusts in CActionRobotMovement2D, versions 3 to 7
  * (estimationMethod, the odometry pose, the motion model and its particle
  * count), with the layout MRPT 2.5.8 writes; older versions: the method. */
 void checkRobotMovement2D(CPeekArchive& a, uint8_t version) {
@@ -59,7 +59,10 @@ void checkRobotMovement2D(CPeekArchive& a, uint8_t version) {
     if (method != ARM::emOdometry)
         refuse(kArm, "estimationMethod " + std::to_string(method) +
                          " is neither emOdometry (0) nor emScan2DMatching (1)");
-    if (version < 4) return;
+    // Version 2 keeps 44 bytes of old options, which MRPT ignores (the
+    // default Gaussian model); version 3 has the model, 5 floats and the
+    // Thrun particle count, as later versions with 6 floats.
+    if (version < 3) return;
     // The odometry increment: a CPose2D object, version 1 (3 doubles), end 0x88.
     if (peekClassName(a, kArm) != "mrpt::poses::CPose2D" || a.peek<uint8_t>() != 1)
         refuse(kArm, "the odometry increment is not a CPose2D (version 1)");
@@ -70,7 +73,7 @@ void checkRobotMovement2D(CPeekArchive& a, uint8_t version) {
     if (model != ARM::mmGaussian && model != ARM::mmThrun)
         refuse(kArm, "motion model " + std::to_string(model) + " is neither 0 nor 1");
     float gauss[6];
-    a.peekBytes(gauss, sizeof(gauss));
+    a.peekBytes(gauss, (version == 3 ? 5 : 6) * sizeof(float));
     const auto particles = a.peek<uint32_t>();
     if (model == ARM::mmThrun && particles > TMrptReadBounds::kMaxThrunParticles)
         refuse(kArm, "Thrun model particle count " + std::to_string(particles) +

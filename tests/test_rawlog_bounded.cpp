@@ -282,6 +282,12 @@ TEST(MrptGuards, OdometryLabelLengthIsBounded) {
     b[at + 3] = 0x7F;
     const auto e = errorOf([&] { readBack(b); });
     EXPECT_NE(e.find("sensorLabel length"), std::string::npos) << e;
+    // Versions 0 and 1 start the same (fuzz_rawlog tries every version).
+    for (uint8_t v : {0, 1}) {
+        b[at - 48] = v;
+        const auto ev = errorOf([&] { readBack(b); });
+        EXPECT_NE(ev.find("sensorLabel length"), std::string::npos) << int(v) << ev;
+    }
 }
 
 TEST(MrptGuards, BearingRangeCountIsBounded) {
@@ -306,6 +312,20 @@ TEST(MrptGuards, BearingRangeCountIsBounded) {
     b[at + 3] = 0x40;
     const auto e = errorOf([&] { readBack(b); });
     EXPECT_NE(e.find("measurement count"), std::string::npos) << e;
+    // Version 2 (no covariance flag, no deviations, 3 floats before the pose)
+    // and version 0 (no timestamp either): the same count is bounded.
+    const size_t ver = 1 + std::string("mrpt::obs::CObservationBearingRange").size();
+    auto b2 = b;
+    b2[ver] = 2;
+    b2.erase(b2.begin() + at - 13, b2.begin() + at);       // the flag and deviations
+    b2.erase(b2.begin() + ver + 1, b2.begin() + ver + 5);  // one float
+    const auto e2 = errorOf([&] { readBack(b2); });
+    EXPECT_NE(e2.find("measurement count"), std::string::npos) << e2;
+    b2[ver] = 0;
+    const size_t ts = ver + 1 + 12 + 119;
+    b2.erase(b2.begin() + ts, b2.begin() + ts + 8);
+    const auto e0 = errorOf([&] { readBack(b2); });
+    EXPECT_NE(e0.find("measurement count"), std::string::npos) << e0;
 }
 
 namespace {

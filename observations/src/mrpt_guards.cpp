@@ -109,10 +109,10 @@ void peekPoseObject(CPeekArchive& a, const char* cls, const char* name, uint8_t 
         refuse(cls, std::string("the ") + name + " is cut short");
 }
 
-/** CObservationOdometry version 2 (MRPT 2.5.8): the pose, then the label. */
+/** CObservationOdometry versions 0-2 (MRPT 2.5.8 writes 2): the pose, then the label. */
 void checkOdometry(CPeekArchive& a, uint8_t version) {
     constexpr const char* kCls = "mrpt::obs::CObservationOdometry";
-    if (version != 2) return;
+    if (version > 2) return;  // MRPT refuses it; 0-2 start alike
     peekPoseObject(a, kCls, "mrpt::poses::CPose2D", 1, 3);
     const auto len = a.peek<uint32_t>();
     const auto left = bytesLeftInStream();
@@ -162,24 +162,28 @@ void peekCovariance(CPeekArchive& a, const char* cls) {
     if (a.peek<uint8_t>() != 0x88) refuse(cls, "a covariance is cut short");
 }
 
-/** CObservationBearingRange version 3 (MRPT 2.5.8): 4 floats, the sensor pose,
- * the timestamp, validCovariances; without covariances 3 float deviations;
+/** CObservationBearingRange versions 0-3 (MRPT 2.5.8 writes 3): 4 floats (3
+ * before version 3), the sensor pose, the timestamp (from version 2),
+ * validCovariances and without covariances 3 float deviations (version 3);
  * the measurement count, the measurements (16 bytes, then a covariance when
- * valid), the label. */
+ * valid), the label (from version 1). */
 void checkBearingRange(CPeekArchive& a, uint8_t version) {
     constexpr const char* kCls = "mrpt::obs::CObservationBearingRange";
-    if (version != 3) return;
+    if (version > 3) return;  // MRPT refuses it
     float f[4];
-    a.peekBytes(f, sizeof(f));
+    a.peekBytes(f, (version >= 3 ? 4 : 3) * sizeof(float));
     peekPoseObject(a, kCls, "mrpt::poses::CPose3D", 3, 12);
-    (void)a.peek<uint64_t>();  // timestamp
-    const auto validCov = a.peek<uint8_t>();
-    if (validCov > 1)
-        refuse(kCls, "validCovariances byte " + std::to_string(validCov) +
-                         " is neither 0 nor 1");
-    if (!validCov) {
-        float sd[3];
-        a.peekBytes(sd, sizeof(sd));
+    if (version >= 2) (void)a.peek<uint64_t>();  // timestamp
+    uint8_t validCov = 0;
+    if (version >= 3) {
+        validCov = a.peek<uint8_t>();
+        if (validCov > 1)
+            refuse(kCls, "validCovariances byte " + std::to_string(validCov) +
+                             " is neither 0 nor 1");
+        if (!validCov) {
+            float sd[3];
+            a.peekBytes(sd, sizeof(sd));
+        }
     }
     // A covariance object takes 1 + 20 + 1 + 8 + 72 + 1 bytes.
     const uint64_t each = validCov ? 16 + 103 : 16;
@@ -190,7 +194,7 @@ void checkBearingRange(CPeekArchive& a, uint8_t version) {
         a.peekBytes(m, sizeof(m));
         if (validCov) peekCovariance(a, kCls);
     }
-    peekLabel(a, kCls, "sensorLabel");
+    if (version >= 1) peekLabel(a, kCls, "sensorLabel");
 }
 
 /** CObservationRFID version 4 (MRPT 2.5.8): the tag count, the powers

@@ -10,12 +10,14 @@
 
 #include <gtest/gtest.h>
 #include <mrpt/io/CMemoryStream.h>
+#include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationBeaconRanges.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 namespace {
@@ -177,4 +179,30 @@ TEST(CheckedClasses, TheClassMrptResolvesIsTheOneChecked) {
                   std::string::npos)
             << e.what();
     }
+}
+
+TEST(CheckedClasses, FileBytesInAnErrorAreEscaped) {
+    // A corrupt class name is quoted as \xNN, so the error stays text.
+    rfir::obs::registerAllClasses();
+    mrpt::io::CMemoryStream m;
+    auto w = mrpt::serialization::archiveFrom(m);
+    mrpt::obs::CSensoryFrame sf;
+    sf.insert(mrpt::obs::CObservationComment::Create());
+    w << mrpt::obs::CActionCollection() << sf;
+    const auto* p = static_cast<const char*>(m.getRawBufferData());
+    std::string b(p, p + m.getTotalBytesCount());
+    const auto at = b.find("mrpt::obs::CObservationComment");
+    ASSERT_NE(at, std::string::npos);
+    b[at + std::string("mrpt::obs::CObservation").size()] = char(0xD9);
+    TmpDir d;
+    const std::string path = d / "bad.rawlog";
+    std::ofstream(path, std::ios::binary) << b;
+    std::string e;
+    try {
+        beaconsIn(path);
+    } catch (const std::exception& x) {
+        e = x.what();
+    }
+    EXPECT_NE(e.find("'mrpt::obs::CObservation\\xD9omment'"), std::string::npos) << e;
+    for (const unsigned char c : e) EXPECT_TRUE(c >= 0x20 && c < 0x7F) << int(c);
 }

@@ -69,6 +69,22 @@ std::string innermostError(std::string msg) {
     msg = b == std::string::npos ? std::string() : msg.substr(b);
     return msg.substr(0, msg.find('\n'));
 }
+
+/** The message with the bytes of a corrupt file it quotes (a class name,
+ * a string) escaped as \xNN: an error is text on any terminal and log. */
+std::string printable(const std::string& msg) {
+    std::string out;
+    for (const unsigned char c : msg) {
+        if (c >= 0x20 && c < 0x7F) {
+            out += char(c);
+            continue;
+        }
+        char hex[5];
+        std::snprintf(hex, sizeof(hex), "\\x%02X", c);
+        out += hex;
+    }
+    return out;
+}
 }  // namespace
 
 CRawlogWriter::CRawlogWriter(const std::string& path,
@@ -198,7 +214,7 @@ mrpt::serialization::CSerializable::Ptr CRawlogReader::readObject() {
         auto ar = mrpt::serialization::archiveFrom(s);
         return rfir::obs::readCheckedObject(ar, "the entry");
     } catch (const std::exception& e) {
-        std::string msg = innermostError(e.what());
+        std::string msg = printable(innermostError(e.what()));
         if (msg.size() > 300) msg = msg.substr(0, 300) + "...";
         throw std::runtime_error(path_ + ": entry " + std::to_string(entry_) +
                                  ": cannot read object (corrupt file, or a class not "

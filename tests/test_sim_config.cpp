@@ -106,6 +106,8 @@ TEST(SimConfig, BadValuesNameTheKey) {
         {"[trajectory]\npredefined = 6\n", "[trajectory] predefined: must be in [1, 5]"},
         {"[trajectory]\nlaps = 2.5\n",
          "[trajectory] laps: expected an integer, got '2.5'"},
+        {"[trajectory]\nlaps = 2\x01\xd9\n",
+         "[trajectory] laps: expected an integer, got '2\\x01\\xD9'"},
         {"[robot]\nreaders = 0.1 0.2 0.3\n", "[robot] readers: entry 1"},
         {"[robot]\nreaders = 0.1 0.2,\n", "[robot] readers: empty entry"},
         {"[rfid]\nenabled = maybe\n",

@@ -97,6 +97,9 @@ const TCase kCases[] = {
      "x '0x1p3' is not a finite decimal number"},
     {"decimal comma", false, "odom 2 0,5 0 0\n", 6,
      "x '0,5' is not a finite decimal number"},
+    // A corrupt file's bytes are quoted escaped, so the error stays text.
+    {"binary bytes", false, "odom 2 0\x01\xd9 0 0\n", 6,
+     "x '0\\x01\\xD9' is not a finite decimal number"},
     {"overflow", false, "ir 2 left 3 1e999\n", 6,
      "volts '1e999' is not a finite decimal number"},
     // Sizes, ranges and rates.

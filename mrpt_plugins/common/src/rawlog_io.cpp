@@ -1,4 +1,5 @@
 #include <rfir/common/rawlog_io.h>
+#include <rfir/models/printable.h>
 #include <rfir/obs/mrpt_guards.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -70,21 +71,6 @@ std::string innermostError(std::string msg) {
     return msg.substr(0, msg.find('\n'));
 }
 
-/** The message with the bytes of a corrupt file it quotes (a class name,
- * a string) escaped as \xNN: an error is text on any terminal and log. */
-std::string printable(const std::string& msg) {
-    std::string out;
-    for (const unsigned char c : msg) {
-        if (c >= 0x20 && c < 0x7F) {
-            out += char(c);
-            continue;
-        }
-        char hex[5];
-        std::snprintf(hex, sizeof(hex), "\\x%02X", c);
-        out += hex;
-    }
-    return out;
-}
 }  // namespace
 
 CRawlogWriter::CRawlogWriter(const std::string& path,

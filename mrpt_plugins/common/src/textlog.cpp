@@ -3,6 +3,7 @@
 #include <rfir/common/map_io.h>
 #include <rfir/common/text_input.h>
 #include <rfir/common/textlog.h>
+#include <rfir/models/printable.h>
 #include <rfir/obs/ir_codes.h>
 
 #include <cmath>
@@ -30,7 +31,7 @@ bool isHeaderKind(const std::string& k) {
 }
 
 std::string quoted(const std::string& s) {
-    return "'" + (s.size() > 80 ? s.substr(0, 77) + "..." : s) + "'";
+    return "'" + printable(s.size() > 80 ? s.substr(0, 77) + "..." : s) + "'";
 }
 }  // namespace
 
@@ -41,7 +42,7 @@ void CTextLogParser::fail(const std::string& msg) const {
 void CTextLogParser::checkFieldCount(const std::vector<std::string>& tok, size_t n,
                                      const char* fields) const {
     if (tok.size() != n + 1)
-        fail("'" + tok[0] + "' takes " + std::to_string(n) + " fields (" + fields +
+        fail(quoted(tok[0]) + " takes " + std::to_string(n) + " fields (" + fields +
              "), got " + std::to_string(tok.size() - 1));
 }
 

@@ -1,6 +1,7 @@
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/text_input.h>
+#include <rfir/models/printable.h>
 
 #include <cerrno>
 #include <cmath>
@@ -56,7 +57,7 @@ uint64_t count(const std::string& tok, const std::string& where, const char* wha
     errno = 0;
     const unsigned long long v = std::strtoull(tok.c_str(), &end, 10);
     if (tok.empty() || tok[0] == '-' || tok[0] == '+' || *end || errno == ERANGE)
-        throw std::runtime_error(where + ": " + what + " '" + tok +
+        throw std::runtime_error(where + ": " + what + " '" + printable(tok) +
                                  "' is not a non-negative integer");
     return v;
 }
@@ -65,7 +66,7 @@ double num(const std::string& tok, const std::string& where, const char* what) {
     char* end = nullptr;
     const double v = std::strtod(tok.c_str(), &end);
     if (tok.empty() || *end || !std::isfinite(v))
-        throw std::runtime_error(where + ": " + what + " '" + tok +
+        throw std::runtime_error(where + ": " + what + " '" + printable(tok) +
                                  "' is not a finite number");
     return v;
 }
@@ -99,16 +100,17 @@ TMapFile loadMapFile(std::istream& f, const std::string& path) {
             e.kind = TMapEntry::Kind::Emitter;
             nCoords = 3;
         } else
-            throw std::runtime_error(where + ": unknown record '" + t[0] +
+            throw std::runtime_error(where + ": unknown record '" + printable(t[0]) +
                                      "' (expected tag, emitter or landmark)");
         if (t.size() != 2 + nCoords && t.size() != 4 + nCoords && t.size() != 6 + nCoords)
             throw std::runtime_error(
-                where + ": '" + t[0] + "' takes " + std::to_string(1 + nCoords) +
-                " fields (id and " + (nCoords == 3 ? "x y z" : "x y") +
+                where + ": '" + printable(t[0]) + "' takes " +
+                std::to_string(1 + nCoords) + " fields (id and " +
+                (nCoords == 3 ? "x y z" : "x y") +
                 "), optionally followed by sx sy and then reads contradicted; got " +
                 std::to_string(t.size() - 1));
         if (!isValidId(t[1]))
-            throw std::runtime_error(where + ": invalid ID '" + t[1] +
+            throw std::runtime_error(where + ": invalid ID '" + printable(t[1]) +
                                      "' (1-64 characters of [A-Za-z0-9_.:-])");
         e.id = t[1];
         e.x = num(t[2], where, "x");

@@ -1,5 +1,6 @@
 /* rfir: the one strict INI section reader. */
 #include <rfir/models/ini_reader.h>
+#include <rfir/models/printable.h>
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -129,7 +130,8 @@ std::string where(const mrpt::config::CConfigFileBase& cfg, const std::string& s
 
 void fail(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
           const std::string& key, const std::string& why) {
-    throw CIniError(where(cfg, section, key) + ": " + why);
+    // An INI value may be anything a corrupt file holds: quoted escaped.
+    throw CIniError(rfir::printable(where(cfg, section, key) + ": " + why));
 }
 
 CIniSection::CIniSection(const mrpt::config::CConfigFileBase& cfg, std::string section,

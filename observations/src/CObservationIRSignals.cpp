@@ -49,9 +49,12 @@ void CObservationIRSignals::serializeFrom(mrpt::serialization::CArchive& in,
             for (auto& r : readings) {
                 r.receiver.id = readBoundedString(in, kWhat);
                 in >> r.receiver.x >> r.receiver.y >> r.receiver.z;
+                requireFinite(kWhat, "receiver x y z",
+                              {r.receiver.x, r.receiver.y, r.receiver.z});
                 r.codes.resize(readBoundedCount(in, kWhat, B::kMaxCodesPerReading, 1));
                 for (auto& c : r.codes) in >> c;
                 in >> r.volts >> r.rateHz;
+                requireFinite(kWhat, "volts and rate", {r.volts, r.rateHz});
                 r.raw.resize(
                     readBoundedCount(in, kWhat, B::kMaxRawSamples, sizeof(float)));
                 // ReadBuffer only throws when nothing at all is read.
@@ -60,6 +63,7 @@ void CObservationIRSignals::serializeFrom(mrpt::serialization::CArchive& in,
                         r.raw.size() * sizeof(float))
                     throw std::runtime_error(std::string(kWhat) +
                                              ": raw window cut short");
+                for (const float v : r.raw) requireFinite(kWhat, "a raw sample", {v});
             }
         } break;
         default:

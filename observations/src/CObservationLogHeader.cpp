@@ -49,22 +49,28 @@ void CObservationLogHeader::serializeFrom(mrpt::serialization::CArchive& in,
             for (auto& r : readers) {
                 r.id = readBoundedString(in, kWhat);
                 in >> r.x >> r.y >> r.halfX >> r.halfY;
+                requireFinite(kWhat, "reader x y halfX halfY",
+                              {r.x, r.y, r.halfX, r.halfY});
             }
             receivers.resize(readBoundedCount(in, kWhat, B::kMaxSensors, 4 + 24));
             for (auto& r : receivers) {
                 r.id = readBoundedString(in, kWhat);
                 in >> r.x >> r.y >> r.z;
+                requireFinite(kWhat, "receiver x y z", {r.x, r.y, r.z});
             }
             rbSensor.reset();
             if (readStrictBool(in, kWhat)) {
                 TRBSensor s;
                 in >> s.x >> s.y >> s.yaw >> s.maxRange >> s.fov;
+                requireFinite(kWhat, "rb_sensor x y yaw max_range fov",
+                              {s.x, s.y, s.yaw, s.maxRange, s.fov});
                 rbSensor = s;
             }
             startPose.reset();
             if (readStrictBool(in, kWhat)) {
                 double x, y, phi;
                 in >> x >> y >> phi;
+                requireFinite(kWhat, "start pose", {x, y, phi});
                 // Set field by field: CPose2D(x, y, phi) normalizes a
                 // heading of pi to -pi, and the pose must read back as written.
                 startPose.emplace();

@@ -48,6 +48,8 @@ void CObservationRFIDReaders::serializeFrom(mrpt::serialization::CArchive& in,
             for (auto& r : readings) {
                 r.reader.id = readBoundedString(in, kWhat);
                 in >> r.reader.x >> r.reader.y >> r.reader.halfX >> r.reader.halfY;
+                requireFinite(kWhat, "reader x y halfX halfY",
+                              {r.reader.x, r.reader.y, r.reader.halfX, r.reader.halfY});
                 r.tags.resize(readBoundedCount(in, kWhat, B::kMaxTagsPerReading, 4));
                 for (auto& t : r.tags) t = readBoundedString(in, kWhat);
             }

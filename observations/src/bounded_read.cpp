@@ -1,6 +1,7 @@
 /* rfir: bounded reads of counts, strings and flags. */
 #include <rfir/obs/bounded_read.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace rfir::obs {
@@ -53,6 +54,14 @@ std::string readBoundedString(mrpt::serialization::CArchive& in, const char* wha
         throw std::runtime_error(std::string(what) +
                                  ": string cut short (truncated data)");
     return s;
+}
+
+void requireFinite(const char* what, const char* fields,
+                   std::initializer_list<double> values) {
+    for (const double v : values)
+        if (!std::isfinite(v))
+            throw std::runtime_error(std::string(what) + ": " + fields +
+                                     " not finite (corrupt data)");
 }
 
 bool readStrictBool(mrpt::serialization::CArchive& in, const char* what) {

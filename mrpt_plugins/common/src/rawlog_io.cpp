@@ -1,5 +1,6 @@
 #include <rfir/common/rawlog_io.h>
 #include <rfir/models/printable.h>
+#include <rfir/obs/bounded_read.h>
 #include <rfir/obs/mrpt_guards.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <utility>
 
 namespace rfir::common {
 using namespace mrpt::obs;
@@ -312,6 +314,36 @@ void CRawlogReader::warnUnused(const CObservation& o) {
 }
 
 bool CRawlogReader::next(TRawlogStep& st) {
+    if (!readStep(st)) return false;
+    checkFinite(st);
+    return true;
+}
+
+void CRawlogReader::checkFinite(const TRawlogStep& st) const {
+    // MRPT reads these doubles unchecked; a NaN would travel into every filter.
+    const std::string where = path_ + ": instant " + std::to_string(st.index + 1);
+    const auto pose = [&](const char* what,
+                          const std::optional<mrpt::poses::CPose2D>& p) {
+        if (p)
+            rfir::obs::requireFinite((where + ": " + what).c_str(), "x y phi",
+                                     {p->x(), p->y(), p->phi()});
+    };
+    pose("odometry", st.odometry);
+    pose("odometry increment", st.odometryIncrement);
+    // Every movement, not only the best: MRPT's getBestMovementEstimation
+    // skips one whose covariance is NaN, and the step would read as unmoved.
+    if (st.action)
+        for (size_t i = 0; i < st.action->size(); i++)
+            if (const auto* mv = dynamic_cast<const CActionRobotMovement2D*>(
+                    &std::as_const(*st.action).get(i)))
+                pose("movement action", mv->rawOdometryIncrementReading);
+    if (st.rb)
+        for (const auto& m : st.rb->sensedData)
+            rfir::obs::requireFinite((where + ": range-bearing").c_str(),
+                                     "range yaw pitch", {m.range, m.yaw, m.pitch});
+}
+
+bool CRawlogReader::readStep(TRawlogStep& st) {
     CActionCollection::Ptr acts;
     CSensoryFrame::Ptr sf;
     if (obsOnly_) {

@@ -7,6 +7,7 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -55,6 +56,12 @@ size_t readBoundedCount64(mrpt::serialization::CArchive& in, const char* what,
 /** Reads a string in MRPT's layout (uint32 length, bytes), bounded. */
 std::string readBoundedString(mrpt::serialization::CArchive& in, const char* what,
                               size_t maxLen = TReadBounds::kMaxLabelBytes);
+/** Throws std::runtime_error naming `what` and `fields` unless every value
+ * is finite: a NaN or infinity read from a file is corrupt data, which the
+ * filters would otherwise carry along silently. */
+void requireFinite(const char* what, const char* fields,
+                   std::initializer_list<double> values);
+
 /** Reads a bool written by MRPT (one byte); refuses values other than 0/1. */
 bool readStrictBool(mrpt::serialization::CArchive& in, const char* what);
 

@@ -91,6 +91,9 @@ class CRawlogReader {
                   mrpt::obs::CSensoryFrame::Ptr& sf);
     bool nextFlatInstant(mrpt::obs::CSensoryFrame::Ptr& sf);
     void addMrptRFID(TRawlogStep& st, const mrpt::obs::CObservationRFID& o);
+    bool readStep(TRawlogStep& st);
+    /** Refuses a non-finite pose or measurement of MRPT's classes. */
+    void checkFinite(const TRawlogStep& st) const;
     /** Warns once per class of an observation no method uses. */
     void warnUnused(const mrpt::obs::CObservation& o);
     rfir::obs::TRFIDReader readerOf(const mrpt::obs::CObservationRFID& o,

@@ -56,8 +56,10 @@ int run(const std::string& in, const std::string& out, bool lossy, bool quiet) {
 int main(int argc, char** argv) {
     try {
         TCLAP::CmdLine cmd(kDescription, ' ', "1.0");
-        TCLAP::ValueArg<std::string> in("i", "input", "input file: .txt or .rawlog", true,
-                                        "", "FILE", cmd);
+        TCLAP::ValueArg<std::string> in(
+            "i", "input",
+            std::string("input file: .txt or .rawlog") + rfir::common::kRawlogClassesHelp,
+            true, "", "FILE", cmd);
         TCLAP::ValueArg<std::string> out("o", "output", "output file: .rawlog or .txt",
                                          true, "", "FILE", cmd);
         TCLAP::SwitchArg lossy("", "lossy",

@@ -42,8 +42,9 @@ TEvalArgs parse(int argc, char** argv) {
                                       false, "", "tag|landmark", cmd);
     TCLAP::ValueArg<std::string> rawlog(
         "", "rawlog",
-        "the rawlog of the run: reader / sensor geometry for the "
-        "passed-over count, odometry for the dead-reckoning row",
+        std::string("the rawlog of the run: reader / sensor geometry for the "
+                    "passed-over count, odometry for the dead-reckoning row") +
+            rfir::common::kRawlogClassesHelp,
         false, "", "FILE", cmd);
     TCLAP::SwitchArg atGt("", "at-gt-times",
                           "pair each ground-truth pose with the estimate interpolated "

@@ -73,8 +73,9 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
 
 int main(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
-    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "input rawlog", true, "", "FILE",
-                                        cmd);
+    TCLAP::ValueArg<std::string> rawlog(
+        "", "rawlog", std::string("input rawlog") + rfir::common::kRawlogClassesHelp,
+        true, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> emitters(
         "", "emitters", "emitter map file (emitter <id> <x> <y> <z>); overrides the INI",
         false, "", "FILE", cmd);

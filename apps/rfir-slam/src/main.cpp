@@ -20,8 +20,9 @@ int main(int argc, char** argv) {
             "path.tum, map.txt, settings.ini, stats.json, path_map.png, scene.3Dscene "
             "(and errors.json, error_time.png with ground truth) into --out-dir.",
             ' ', "0.1");
-        TCLAP::ValueArg<std::string> rawlog("", "rawlog", "input rawlog", true, "",
-                                            "FILE", cmd);
+        TCLAP::ValueArg<std::string> rawlog(
+            "", "rawlog", std::string("input rawlog") + rfir::common::kRawlogClassesHelp,
+            true, "", "FILE", cmd);
         TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", true, "",
                                             "DIR", cmd);
         TCLAP::ValueArg<std::string> method("", "method",

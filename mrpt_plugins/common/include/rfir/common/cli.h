@@ -16,6 +16,11 @@
 #include <vector>
 
 namespace rfir::common {
+/** Said in the help of every option that takes a rawlog. */
+inline constexpr const char* kRawlogClassesHelp =
+    " (records of MRPT classes rfir does not check are refused unless listed in the "
+    "environment variable RFIR_TRUST_MRPT_CLASSES: docs/hardening.md)";
+
 /** Exit code of a command-line error (unknown option, bad value, ...). */
 constexpr int kUsageExitCode = 2;
 

@@ -51,8 +51,12 @@ CCheckedClassesScope::~CCheckedClassesScope() {
 }
 
 mrpt::serialization::CSerializable::Ptr readCheckedObject(
-    mrpt::serialization::CArchive& in, const std::string& where) {
+    mrpt::serialization::CArchive& in, const char* container, int64_t index) {
     if (!tlChecked) return in.ReadObject();
+    // Built once per object, only inside the scope (rfir's reader).
+    const std::string where =
+        index < 0 ? std::string(container)
+                  : std::string(container) + ": object " + std::to_string(index);
     detail::CPeekArchive a(in);
     const auto stored = detail::peekClassName(a, where);
     // "nullptr" is read as an empty pointer, which the containers refuse.

@@ -265,8 +265,7 @@ class CGuardedRobotMovement2D : public mrpt::obs::CActionRobotMovement2D {
  * CActionCollection::serializeFrom (a null deepcopy_poly_ptr is cloned). */
 template <class T>
 typename T::Ptr readMember(CArchive& a, const char* cls, uint32_t i) {
-    const auto o =
-        readCheckedObject(a, std::string(cls) + ": object " + std::to_string(i));
+    const auto o = readCheckedObject(a, cls, i);
     auto t = std::dynamic_pointer_cast<T>(o);
     if (!t)
         refuse(cls, "object " + std::to_string(i) + " is " +

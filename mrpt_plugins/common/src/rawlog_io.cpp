@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -321,15 +322,20 @@ bool CRawlogReader::next(TRawlogStep& st) {
 
 void CRawlogReader::checkFinite(const TRawlogStep& st) const {
     // MRPT reads these doubles unchecked; a NaN would travel into every filter.
-    const std::string where = path_ + ": instant " + std::to_string(st.index + 1);
-    const auto pose = [&](const char* what,
-                          const std::optional<mrpt::poses::CPose2D>& p) {
-        if (p)
-            rfir::obs::requireFinite((where + ": " + what).c_str(), "x y phi",
-                                     {p->x(), p->y(), p->phi()});
+    // The message is built only for a value that fails (this runs per instant).
+    const auto check = [&](const char* what, const char* fields,
+                           std::initializer_list<double> v) {
+        if (std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }))
+            return;
+        rfir::obs::requireFinite(
+            (path_ + ": instant " + std::to_string(st.index + 1) + ": " + what).c_str(),
+            fields, v);
     };
-    pose("odometry", st.odometry);
-    pose("odometry increment", st.odometryIncrement);
+    const auto pose = [&](const char* what, const mrpt::poses::CPose2D& p) {
+        check(what, "x y phi", {p.x(), p.y(), p.phi()});
+    };
+    if (st.odometry) pose("odometry", *st.odometry);
+    if (st.odometryIncrement) pose("odometry increment", *st.odometryIncrement);
     // Every movement, not only the best: MRPT's getBestMovementEstimation
     // skips one whose covariance is NaN, and the step would read as unmoved.
     if (st.action)
@@ -339,8 +345,7 @@ void CRawlogReader::checkFinite(const TRawlogStep& st) const {
                 pose("movement action", mv->rawOdometryIncrementReading);
     if (st.rb)
         for (const auto& m : st.rb->sensedData)
-            rfir::obs::requireFinite((where + ": range-bearing").c_str(),
-                                     "range yaw pitch", {m.range, m.yaw, m.pitch});
+            check("range-bearing", "range yaw pitch", {m.range, m.yaw, m.pitch});
 }
 
 bool CRawlogReader::readStep(TRawlogStep& st) {

@@ -53,8 +53,8 @@ class CCheckedClassesScope {
 inline constexpr const char* kTrustClassesEnv = "RFIR_TRUST_MRPT_CLASSES";
 
 /** Reads one object (MRPT's ReadObject), first refusing, inside a
- * CCheckedClassesScope, a class not checked nor trusted; `where` names the
- * container in the error. */
+ * CCheckedClassesScope, a class not checked nor trusted; `where` (and, when
+ * not negative, `index` as "object N") name it in the error. */
 mrpt::serialization::CSerializable::Ptr readCheckedObject(
-    mrpt::serialization::CArchive& in, const std::string& where);
+    mrpt::serialization::CArchive& in, const char* where, int64_t index = -1);
 }  // namespace rfir::obs

@@ -99,6 +99,49 @@ TEST(OdometryNoise, PropagateComposesAndWraps) {
     EXPECT_NEAR(phi, 3.5 - 2 * M_PI, 1e-12);
 }
 
+// The filters carry a particle's heading cos and sin through the motion
+// draw: the small-angle series is within rounding of std::cos / std::sin, and
+// the carried values follow the heading the same draws give.
+TEST(OdometryNoise, SmallAngleCosSinIsWithinRounding) {
+    double c = 7, s = 7;
+    for (double a = -0.5; a <= 0.5; a += 1.0 / 4096) {
+        ASSERT_TRUE(rfir::models::smallAngleCosSin(a, c, s)) << a;
+        EXPECT_NEAR(c, std::cos(a), 2.3e-16) << a;
+        EXPECT_NEAR(s, std::sin(a), 2.3e-16) << a;
+    }
+    c = s = 7;
+    EXPECT_FALSE(rfir::models::smallAngleCosSin(0.51, c, s));
+    EXPECT_FALSE(rfir::models::smallAngleCosSin(-3.0, c, s));
+    EXPECT_FALSE(rfir::models::smallAngleCosSin(std::nan(""), c, s));
+    EXPECT_EQ(c, 7.0);
+    EXPECT_EQ(s, 7.0);
+}
+
+TEST(OdometryNoise, CarriedHeadingFollowsTheSameDraws) {
+    // Noisy increments with turns of both signs, one with a noise wide enough
+    // (heading std 0.3 rad) that some draws take the exact fallback.
+    const OdometryNoiseParams quiet{0.05, 0.001, 0.02, 0.02, 0.001, 0.002};
+    const OdometryNoiseParams wide{0.05, 0.001, 0.02, 0.02, 0.001, 0.3};
+    TRandom a(3), b(3);
+    double x1 = 0, y1 = 0, p1 = 3.1, x2 = 0, y2 = 0, p2 = 3.1;
+    double c = std::cos(p2), s = std::sin(p2);
+    for (int k = 0; k < 2000; k++) {
+        const auto g = OdometryGaussian::fromOdometry(0.05, 0.002, k % 2 ? 0.2 : -0.15,
+                                                      k % 7 ? quiet : wide);
+        g.propagate(a, x1, y1, p1);
+        g.propagateCarryingHeading(b, x2, y2, p2, c, s);
+        ASSERT_GT(p2, -M_PI);
+        ASSERT_LE(p2, M_PI);
+        // The same draws: the heading is the same sum; the position uses the
+        // carried cos, sin (within rounding of the exact ones).
+        ASSERT_EQ(p1, p2) << k;
+        ASSERT_NEAR(c, std::cos(p2), 1e-12) << k;
+        ASSERT_NEAR(s, std::sin(p2), 1e-12) << k;
+    }
+    EXPECT_NEAR(x1, x2, 1e-9);
+    EXPECT_NEAR(y1, y2, 1e-9);
+}
+
 // The one spatial grid: a square query returns every value within r, a 3 x 3
 // query every value within one cell side, in the same order each time.
 TEST(SpatialGrid, QueriesCoverTheirRadiusInAFixedOrder) {
@@ -121,8 +164,12 @@ TEST(SpatialGrid, QueriesCoverTheirRadiusInAFixedOrder) {
             const auto has = [i](const std::vector<size_t>& v) {
                 return std::find(v.begin(), v.end(), i) != v.end();
             };
-            if (d <= 0.8) EXPECT_TRUE(has(sq)) << i;
-            if (d <= 0.5) EXPECT_TRUE(has(around)) << i;
+            if (d <= 0.8) {
+                EXPECT_TRUE(has(sq)) << i;
+            }
+            if (d <= 0.5) {
+                EXPECT_TRUE(has(around)) << i;
+            }
         }
     }
     // Within a cell, the insertion order.

@@ -49,6 +49,8 @@ void OdometryGaussian::factor() {
     const double l22 = root(C[8] - l20 * l20 - l21 * l21);
     const double L[6] = {l00, l10, l11, l20, l21, l22};
     std::copy(L, L + 6, m_L);
+    m_cosMean = std::cos(m_mean[2]);
+    m_sinMean = std::sin(m_mean[2]);
 }
 
 }  // namespace rfir::models

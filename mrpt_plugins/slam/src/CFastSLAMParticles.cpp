@@ -33,6 +33,7 @@ void TFastSLAMOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
 void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY,
                                double stdPhi, rfir::models::TRandom& rng) {
     rng_ = &rng;
+    moves_ = 0;
     m_particles.assign(M, {});
     for (auto& p : m_particles) {
         p.log_w = 0;
@@ -83,8 +84,8 @@ void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     if (const auto g = motionOf(action))
         drawMotion(
-            *g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d.pose; },
-            *rng_);
+            *g, m_particles, [](auto& p) -> CParticlePose2D& { return p.d.pose; }, *rng_,
+            moves_);
     if (!detections_ || detections_->empty()) return;
     std::vector<size_t> idx;
     for (const auto& d : *detections_) idx.push_back(indexOf(d));
@@ -96,7 +97,7 @@ mrpt::poses::CPose2D CFastSLAMParticles::meanPose() const {
     for (size_t i = 0; i < lw.size(); i++) lw[i] = m_particles[i].log_w;
     return weightedMeanPose(
         m_particles.size(), lw,
-        [&](size_t i) -> const mrpt::poses::CPose2D& { return m_particles[i].d.pose; });
+        [&](size_t i) -> const CParticlePose2D& { return m_particles[i].d.pose; });
 }
 
 std::vector<CFastSLAMParticles::TLandmarkEstimate> CFastSLAMParticles::landmarks() const {

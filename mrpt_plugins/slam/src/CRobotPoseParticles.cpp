@@ -14,6 +14,7 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
                                 double stdPhi, rfir::models::TRandom& rng) {
     m_rng = &rng;
     m_ess = -1;
+    m_moves = 0;
     m_particles.assign(M, {});
     for (auto& p : m_particles) {
         p.log_w = 0;
@@ -34,11 +35,11 @@ mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
     if (normalised)
         return weightedMeanPoseLinear(
             n, [&](size_t i) { return m_normW[i]; },
-            [&](size_t i) -> const mrpt::poses::CPose2D& { return m_particles[i].d; });
+            [&](size_t i) -> const CParticlePose2D& { return m_particles[i].d; });
     // The weights are read in place: no copy of them per call (twice a step).
     return weightedMeanPose(
         m_particles.size(), [&](size_t i) { return m_particles[i].log_w; },
-        [&](size_t i) -> const mrpt::poses::CPose2D& { return m_particles[i].d; });
+        [&](size_t i) -> const CParticlePose2D& { return m_particles[i].d; });
 }
 
 void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
@@ -117,8 +118,8 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     // Gaussian per particle.
     if (const auto g = motionOf(action))
         drawMotion(
-            *g, m_particles, [](auto& p) -> mrpt::poses::CPose2D& { return p.d; },
-            *m_rng);
+            *g, m_particles, [](auto& p) -> CParticlePose2D& { return p.d; }, *m_rng,
+            m_moves);
     m_ess = -1;
     m_stepLogLik.clear();
     if (!m_model) return;

@@ -71,7 +71,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
      * @{ */
     void afterMotion() override;
     bool weighs() const override { return !obs_.empty(); }
-    double logLikelihood(size_t i, const mrpt::poses::CPose2D& p) const override {
+    double logLikelihood(size_t i, const CParticlePose2D& p) const override {
         return weigh(i, p);
     }
     /** @} */
@@ -81,7 +81,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     TStepEvidence stepEvidence() const;
     /** Particle i's log-likelihood: the sum computeObservationLikelihood
      * gives over obs_ (same terms, same order), from reads resolved once. */
-    double weigh(size_t i, const mrpt::poses::CPose2D& p) const {
+    double weigh(size_t i, const CParticlePose2D& p) const {
         // CPose3D(p) has x, y, yaw == p.x(), p.y(), p.phi() exactly.
         const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
         double ll = 0, base = 0;

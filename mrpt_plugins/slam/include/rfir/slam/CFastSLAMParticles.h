@@ -6,6 +6,7 @@
 
 #include <rfir/models/random.h>
 
+#include <rfir/slam/CParticlePose2D.h>
 #include <rfir/slam/detections.h>
 #include <rfir/slam/landmark_ekf.h>
 #include <rfir/slam/persistent_vector.h>
@@ -21,7 +22,7 @@
 
 namespace rfir::slam {
 struct TFastSLAMParticle {
-    mrpt::poses::CPose2D pose;
+    CParticlePose2D pose;
     CPersistentVector<TLandmarkEKF> landmarks;  //!< by CFastSLAMParticles index
 };
 
@@ -76,6 +77,7 @@ class CFastSLAMParticles
 
     CGaussianLandmarkModel model_;
     rfir::models::TRandom* rng_ = nullptr;  //!< the engine's generator
+    unsigned moves_ = 0;                    //!< motion draws (drawMotion)
     const std::vector<TDetection>* detections_ = nullptr;
     std::map<std::string, size_t> index_;
     std::vector<std::string> names_;

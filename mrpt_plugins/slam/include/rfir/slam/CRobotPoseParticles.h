@@ -12,12 +12,13 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <rfir/models/random.h>
+#include <rfir/slam/CParticlePose2D.h>
 
 #include <vector>
 
 namespace rfir::slam {
 using TPoseParticleData =
-    mrpt::bayes::CParticleFilterData<mrpt::poses::CPose2D,
+    mrpt::bayes::CParticleFilterData<CParticlePose2D,
                                      mrpt::bayes::particle_storage_mode::VALUE>;
 
 class CRobotPoseParticles
@@ -41,8 +42,7 @@ class CRobotPoseParticles
         /** Whether this step's observation weighs the robot. */
         virtual bool weighs() const = 0;
         /** Log-likelihood of particle i at its moved pose. */
-        virtual double logLikelihood(size_t i,
-                                     const mrpt::poses::CPose2D& pose) const = 0;
+        virtual double logLikelihood(size_t i, const CParticlePose2D& pose) const = 0;
     };
     void setStepModel(IStepModel* m) { m_model = m; }
 
@@ -78,6 +78,7 @@ class CRobotPoseParticles
   protected:
     rfir::models::TRandom* m_rng = nullptr;  //!< the engine's generator
     IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
+    unsigned m_moves = 0;                    //!< motion draws (drawMotion)
     double m_ess = -1;                 //!< ESS computed by normalizeWeights; < 0: stale
     std::vector<double> m_stepLogLik;  //!< this step's weighing terms
     /** The last normalizeWeights' log-weights and their exp, which meanPose

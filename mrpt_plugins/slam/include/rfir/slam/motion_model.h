@@ -10,6 +10,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <rfir/models/odometry_noise.h>
+#include <rfir/slam/CParticlePose2D.h>
 
 #include <optional>
 #include <vector>
@@ -101,21 +102,16 @@ std::optional<rfir::models::OdometryGaussian> motionOf(
 
 /** The prediction every robot filter shares: each particle's pose moves by
  * its own draw of the odometry Gaussian (SPEC section 3), a plain loop of three
- * normal draws and one composition per particle. `poseOf(p)` returns a
- * reference to particle p's CPose2D. */
+ * normal draws and one composition per particle, the heading's cos and sin
+ * carried (CParticlePose2D::move). `poseOf(p)` returns a reference to
+ * particle p's CParticlePose2D; `moves` counts the calls of a particle set,
+ * which recomputes the carried values every kExactHeadingEvery moves. */
+constexpr unsigned kExactHeadingEvery = 64;
 template <class Particles, class PoseOf>
 void drawMotion(const rfir::models::OdometryGaussian& g, Particles& particles,
-                PoseOf&& poseOf, rfir::models::TRandom& rng) {
-    for (auto& p : particles) {
-        mrpt::poses::CPose2D& pose = poseOf(p);
-        // The heading's cos and sin are the pose's cached ones (computed once
-        // after the last move, by the weighing): one sincos per particle.
-        double x = pose.x(), y = pose.y(), phi = pose.phi();
-        g.propagate(rng, x, y, phi, pose.phi_cos(), pose.phi_sin());
-        pose.x(x);
-        pose.y(y);
-        pose.phi(phi);
-    }
+                PoseOf&& poseOf, rfir::models::TRandom& rng, unsigned& moves) {
+    const bool exact = ++moves % kExactHeadingEvery == 0;
+    for (auto& p : particles) poseOf(p).move(g, rng, exact);
 }
 
 }  // namespace rfir::slam

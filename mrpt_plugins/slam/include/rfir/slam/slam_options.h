@@ -82,11 +82,11 @@ mrpt::poses::CPose2D weightedMeanPoseLinear(size_t n, GetW weight, GetPose get) 
     double sw = 0, x = 0, y = 0, c = 0, s = 0;
     for (size_t i = 0; i < n; i++) {
         const double w = weight(i);
-        const mrpt::poses::CPose2D& p = get(i);
+        const auto& p = get(i);  // CParticlePose2D: its cos, sin read inline
         sw += w;
         x += w * p.x();
         y += w * p.y();
-        c += w * p.phi_cos();  // cached in the pose: one sincos per new heading
+        c += w * p.phi_cos();  // cached in the pose
         s += w * p.phi_sin();
     }
     if (sw <= 0) return get(0);

@@ -53,23 +53,24 @@ CCheckedClassesScope::~CCheckedClassesScope() {
 mrpt::serialization::CSerializable::Ptr readCheckedObject(
     mrpt::serialization::CArchive& in, const char* container, int64_t index) {
     if (!tlChecked) return in.ReadObject();
-    // Built once per object, only inside the scope (rfir's reader).
-    const std::string where =
-        index < 0 ? std::string(container)
-                  : std::string(container) + ": object " + std::to_string(index);
+    // The object's name is built only for an error (this runs per object).
+    const auto where = [&] {
+        return index < 0 ? std::string(container)
+                         : std::string(container) + ": object " + std::to_string(index);
+    };
     detail::CPeekArchive a(in);
-    const auto stored = detail::peekClassName(a, where);
+    const auto stored = detail::peekClassNameOf(a, where);
     // "nullptr" is read as an empty pointer, which the containers refuse.
     if (stored == "nullptr") return a.ReadObject();
     const auto* id = mrpt::rtti::findRegisteredClass(stored);
     if (!id)
-        throw std::runtime_error(where + " names the class '" + stored +
+        throw std::runtime_error(where() + " names the class '" + stored +
                                  "', which is not registered (corrupt data, or a "
                                  "class of a library this program does not load)");
     const std::string name = id->className;
     if (!checked(name) && !trusted(name))
         throw std::runtime_error(
-            where + " is a '" + name +
+            where() + " is a '" + name +
             "', an MRPT class whose reader rfir does not check (a corrupt count in "
             "it can take all memory): refused; to read it unchecked, set " +
             kTrustClassesEnv + "=" + name.substr(name.rfind(':') + 1) +

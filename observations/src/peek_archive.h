@@ -59,13 +59,18 @@ class CPeekArchive : public CArchive {
 }
 
 /** The class name of the serialized object that follows (MRPT's header: a
- * length byte, 0x80 set in the current format, then the name). */
-inline std::string peekClassName(CPeekArchive& a, const std::string& cls) {
+ * length byte, 0x80 set in the current format, then the name); `where()`
+ * names the object in the error, and is called only for one. */
+template <class Where>
+std::string peekClassNameOf(CPeekArchive& a, Where&& where) {
     const auto len = a.peek<uint8_t>();
-    if (!(len & 0x80)) refuse(cls, "object in MRPT's pre-2008 format");
+    if (!(len & 0x80)) refuse(where(), "object in MRPT's pre-2008 format");
     std::string name(len & 0x7F, '\0');
     if (!name.empty()) a.peekBytes(name.data(), name.size());
     return name;
+}
+inline std::string peekClassName(CPeekArchive& a, const std::string& cls) {
+    return peekClassNameOf(a, [&]() -> const std::string& { return cls; });
 }
 
 /** The MRPT classes mrpt_guards.cpp replaces by checked readers. */

@@ -85,16 +85,7 @@ class OdometryGaussian {
     /** The same, given c, s = cos(phi), sin(phi). */
     void propagate(TRandom& rng, double& x, double& y, double& phi, double c,
                    double s) const {
-        double ix, iy, iphi;
-        draw(rng, ix, iy, iphi);
-        x += c * ix - s * iy;
-        y += s * ix + c * iy;
-        phi += iphi;
-        // CPose2D's composition wraps into (-pi, pi].
-        if (phi > M_PI || phi <= -M_PI) {
-            phi = std::remainder(phi, 2 * M_PI);
-            if (phi <= -M_PI) phi += 2 * M_PI;
-        }
+        compose(rng, x, y, phi, c, s);
     }
 
     /** The same, also carrying the heading's cos and sin: c, s are
@@ -106,33 +97,39 @@ class OdometryGaussian {
      * many steps recomputes them now and then (CParticlePose2D). */
     void propagateCarryingHeading(TRandom& rng, double& x, double& y, double& phi,
                                   double& c, double& s) const {
-        double ix, iy, iphi;
-        draw(rng, ix, iy, iphi);
-        x += c * ix - s * iy;
-        y += s * ix + c * iy;
-        phi += iphi;
-        const double noise = iphi - m_mean[2];
-        double cn, sn;
-        if (!smallAngleCosSin(noise, cn, sn)) {
-            cn = std::cos(iphi);
-            sn = std::sin(iphi);
-        } else {
+        const double iphi = compose(rng, x, y, phi, c, s);
+        double cn, sn;  // of the turn iphi
+        if (smallAngleCosSin(iphi - m_mean[2], cn, sn)) {
             const double ct = m_cosMean * cn - m_sinMean * sn;
             sn = m_sinMean * cn + m_cosMean * sn;
             cn = ct;
+        } else {
+            cn = std::cos(iphi);
+            sn = std::sin(iphi);
         }
         const double c2 = c * cn - s * sn;
         s = s * cn + c * sn;
         c = c2;
-        if (phi > M_PI || phi <= -M_PI) {
-            phi = std::remainder(phi, 2 * M_PI);
-            if (phi <= -M_PI) phi += 2 * M_PI;
-        }
     }
 
     const double* covariance() const { return m_C; }  //!< row-major 3x3
 
   private:
+    /** pose (+) one draw, heading wrapped to (-pi, pi] as CPose2D's
+     * composition does; c, s of the heading before. Returns the drawn turn. */
+    double compose(TRandom& rng, double& x, double& y, double& phi, double c,
+                   double s) const {
+        double ix, iy, iphi;
+        draw(rng, ix, iy, iphi);
+        x += c * ix - s * iy;
+        y += s * ix + c * iy;
+        phi += iphi;
+        if (phi > M_PI || phi <= -M_PI) {
+            phi = std::remainder(phi, 2 * M_PI);
+            if (phi <= -M_PI) phi += 2 * M_PI;
+        }
+        return iphi;
+    }
     void factor();
     double m_mean[3] = {0, 0, 0};
     double m_cosMean = 1, m_sinMean = 0;  //!< of the mean turn m_mean[2]

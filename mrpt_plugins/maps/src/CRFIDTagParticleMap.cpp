@@ -46,6 +46,26 @@ const CRFIDTagParticleMap::TTagEntry* CRFIDTagParticleMap::getLandmark(
     return it == m_landmarks.end() ? nullptr : &it->second;
 }
 
+bool CRFIDTagParticleMap::translateEntry(const std::string& id, bool landmark, double dx,
+                                         double dy) {
+    auto& table = landmark ? m_landmarks : m_tags;
+    const auto it = table.find(id);
+    if (it == table.end()) return false;
+    TTagEntry& e = it->second;
+    e.estimator->moveStates([&](size_t, const mrpt::math::TPoint2D& p) {
+        return mrpt::math::TPoint2D(p.x + dx, p.y + dy);
+    });
+    // What the robot is weighed against during a visit moves with the tag.
+    e.visitStartEstimate.mean.x += dx;
+    e.visitStartEstimate.mean.y += dy;
+    for (auto& q : e.visitStartSample) q.x += dx, q.y += dy;
+    e.spreadOrigin.x += dx;
+    e.spreadOrigin.y += dy;
+    for (auto& q : e.spreadPoses) q.x += dx, q.y += dy;
+    Impl::refresh(*this, e);
+    return true;
+}
+
 static std::vector<const CRFIDTagParticleMap::TTagEntry*> sortedEntries(
     const std::unordered_map<std::string, CRFIDTagParticleMap::TTagEntry>& t) {
     std::vector<const CRFIDTagParticleMap::TTagEntry*> v;

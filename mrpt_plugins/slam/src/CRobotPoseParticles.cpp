@@ -1,4 +1,6 @@
 #include <rfir/slam/CRobotPoseParticles.h>
+
+#include <mrpt/math/wrap2pi.h>
 #include <rfir/slam/motion_model.h>
 #include <rfir/slam/slam_options.h>
 
@@ -40,6 +42,27 @@ mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
     return weightedMeanPose(
         m_particles.size(), [&](size_t i) { return m_particles[i].log_w; },
         [&](size_t i) -> const CParticlePose2D& { return m_particles[i].d; });
+}
+
+TPoseMoments CRobotPoseParticles::poseMoments() const {
+    TPoseMoments m;
+    if (m_particles.empty()) return m;
+    const auto mean = meanPose();  // circular mean of the headings
+    m.x = mean.x();
+    m.y = mean.y();
+    m.phi = mean.phi();
+    double top = -1e300;
+    for (const auto& q : m_particles) top = std::max(top, q.log_w);
+    double sw = 0;
+    for (const auto& q : m_particles) {
+        const double w = std::exp(q.log_w - top);
+        const Eigen::Vector3d v(q.d.x() - m.x, q.d.y() - m.y,
+                                mrpt::math::wrapToPi(q.d.phi() - m.phi));
+        m.cov += w * v * v.transpose();
+        sw += w;
+    }
+    m.cov /= sw;
+    return m;
 }
 
 void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {

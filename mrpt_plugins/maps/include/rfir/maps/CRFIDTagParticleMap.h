@@ -158,6 +158,12 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     double robotReadsLogLikelihood(const TRobotReads& r, const mrpt::math::TPose2D& robot,
                                    double c, double s, double* baseSum) const;
 
+    /** Moves one tag's (or landmark's) estimate rigidly by (dx, dy) m: every
+     * stored state, the visit-start estimate and sample (the engine's
+     * correction of tags correlated with the robot, docs/slam.md "Tags that
+     * move with the robot"). False if the ID is not mapped. */
+    bool translateEntry(const std::string& id, bool landmark, double dx, double dy);
+
     /** @name Instrumentation: tag entries touched (created or updated).
      * @{ */
     size_t lastInsertTouched() const { return m_lastTouched; }

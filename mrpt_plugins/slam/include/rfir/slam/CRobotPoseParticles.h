@@ -13,6 +13,7 @@
 
 #include <rfir/models/random.h>
 #include <rfir/slam/CParticlePose2D.h>
+#include <rfir/slam/tag_correlation.h>
 
 #include <vector>
 
@@ -47,6 +48,8 @@ class CRobotPoseParticles
     void setStepModel(IStepModel* m) { m_model = m; }
 
     mrpt::poses::CPose2D meanPose() const;
+    /** Weighted mean pose and covariance of the particles. */
+    TPoseMoments poseMoments() const;
 
     /** @name The last step's weighing, as it weighed: per-particle
      * log-likelihoods and the log of their mean under the weights before it

@@ -1,0 +1,71 @@
+/* rfir: the tags of PF-SLAM's and PS-SLAM's one shared map that still move
+ * with the robot. A tag mapped from an uncertain robot pose carries that
+ * pose's error: tag = robot xy + R(phi) l, so its cross-covariance with the
+ * robot pose is C = J P (J = [I2 | (-ly, lx)], P the robot's 3x3
+ * covariance), and as the robot moves on C follows the motion's Jacobian,
+ * which over any stretch is the shear of the mean displacement (EKF-SLAM's
+ * robot-map terms). When a return to known tags corrects the robot by d, the
+ * linear-Gaussian conditional moves each such tag by C P^-1 d and makes C
+ * C P^-1 P+ (the Kalman update restricted to the robot-tag terms; tag-tag
+ * terms are not kept). So the tags of a drifted first lap follow the loop
+ * closure, as FastSLAM's per-particle maps do by resampling. C is kept
+ * consistent with the tag's own share of the robot's error (C P^-1 C^T <= T),
+ * so that a cloud narrower than the one C was built with cannot amplify a
+ * small correction into a large shift. */
+#pragma once
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rfir::slam {
+/** Weighted mean and covariance of the robot particles' poses (x, y, phi;
+ * the heading's mean and deviations circular). */
+struct TPoseMoments {
+    double x = 0, y = 0, phi = 0;
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+};
+
+class CTagRobotCorrelation {
+  public:
+    /** Shift callback: (id, landmark, dx, dy). */
+    using TShift = std::function<void(const std::string&, bool, double, double)>;
+
+    /** minStd (m): a tag whose cross-covariance with the robot position has
+     * shrunk below minStd^2 leaves the set: it no longer moves with it. */
+    explicit CTagRobotCorrelation(double minStd = 0.002) : m_minVar(minStd * minStd) {}
+
+    void clear() { m_active.clear(); }
+    /** A tag (or landmark) just mapped at (tx, ty) from a robot with these
+     * pose moments. */
+    void add(const std::string& id, bool landmark, double tx, double ty,
+             const TPoseMoments& robot);
+    /** The weighing moved the robot's moments from `before` to `after`:
+     * moves every correlated tag through `shift`, updates C. Returns the
+     * number of tags moved. */
+    size_t correct(const TPoseMoments& before, const TPoseMoments& after,
+                   const TShift& shift);
+    /** The tags that weighed the robot in this step: the weighing took them
+     * as independent of it, so moving them with its correction would feed it
+     * back (robot and tag chasing each other); they leave the set. */
+    void drop(const std::vector<std::string>& ids);
+    size_t size() const { return m_active.size(); }
+
+  private:
+    struct TEntry {
+        std::string id;
+        bool landmark = false;
+        Eigen::Matrix<double, 2, 3> C;  //!< cross-covariance at the reference
+        /** The tag's variance from the robot's error (J P J^T at the first
+         * read, less what corrections took): C P^-1 C^T may not exceed it
+         * (the joint covariance stays positive), which bounds a shift. */
+        Eigen::Matrix2d T;
+        double refX = 0, refY = 0;  //!< robot mean position C refers to
+    };
+    std::vector<TEntry> m_active;
+    double m_minVar;
+};
+
+}  // namespace rfir::slam

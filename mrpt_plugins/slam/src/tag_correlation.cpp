@@ -1,0 +1,79 @@
+#include <rfir/slam/tag_correlation.h>
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rfir::slam {
+namespace {
+double positionVariance(const Eigen::Matrix<double, 2, 3>& C) {
+    return 0.5 * std::abs(C(0, 0) + C(1, 1));
+}
+}  // namespace
+
+void CTagRobotCorrelation::add(const std::string& id, bool landmark, double tx, double ty,
+                               const TPoseMoments& r) {
+    Eigen::Matrix<double, 2, 3> J;
+    J << 1, 0, -(ty - r.y), 0, 1, tx - r.x;
+    TEntry e{id, landmark, J * r.cov, J * r.cov * J.transpose(), r.x, r.y};
+    if (positionVariance(e.C) < m_minVar) return;
+    m_active.push_back(e);
+}
+
+size_t CTagRobotCorrelation::correct(const TPoseMoments& before, const TPoseMoments& after,
+                                     const TShift& shift) {
+    if (m_active.empty()) return 0;
+    const Eigen::Matrix3d& P = before.cov;
+    // A weighing that did not narrow the cloud (a split, a flat weighing) is
+    // no Gaussian update; a collapsed cloud has no usable inverse.
+    if (!(after.cov.determinant() < P.determinant()) || P.determinant() <= 1e-30) return 0;
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(P);
+    const Eigen::Vector3d d(after.x - before.x, after.y - before.y,
+                            mrpt::math::wrapToPi(after.phi - before.phi));
+    const Eigen::Vector3d g = ldlt.solve(d);
+    const Eigen::Matrix3d shrink = ldlt.solve(after.cov);
+    size_t moved = 0;
+    for (auto& e : m_active) {
+        // C carried along the mean path since its reference: the product of
+        // the motion Jacobians is the shear of the displacement.
+        Eigen::Matrix3d Ft = Eigen::Matrix3d::Identity();
+        Ft(2, 0) = -(before.y - e.refY);
+        Ft(2, 1) = before.x - e.refX;
+        Eigen::Matrix<double, 2, 3> Ct = e.C * Ft;
+        const double explained = (Ct * ldlt.solve(Ct.transpose())).trace();
+        if (explained > e.T.trace()) Ct *= std::sqrt(e.T.trace() / explained);
+        const Eigen::Vector2d s = Ct * g;
+        shift(e.id, e.landmark, s.x(), s.y());
+        // The tag's variance drops by what the correction explained.
+        e.T -= Ct * ldlt.solve((P - after.cov) * ldlt.solve(Ct.transpose()));
+        e.T = 0.5 * (e.T + e.T.transpose());
+        e.C = Ct * shrink;
+        e.refX = after.x;
+        e.refY = after.y;
+        moved++;
+    }
+    m_active.erase(
+        std::remove_if(m_active.begin(), m_active.end(),
+                       [&](const TEntry& e) {
+                           return positionVariance(e.C) < m_minVar ||
+                                  0.5 * e.T.trace() < m_minVar;
+                       }),
+        m_active.end());
+    return moved;
+}
+
+void CTagRobotCorrelation::drop(const std::vector<std::string>& ids) {
+    if (ids.empty() || m_active.empty()) return;
+    m_active.erase(std::remove_if(m_active.begin(), m_active.end(),
+                                  [&](const TEntry& e) {
+                                      return std::find(ids.begin(), ids.end(), e.id) !=
+                                             ids.end();
+                                  }),
+                   m_active.end());
+}
+
+}  // namespace rfir::slam

@@ -46,22 +46,29 @@ mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
 
 TPoseMoments CRobotPoseParticles::poseMoments() const {
     TPoseMoments m;
-    if (m_particles.empty()) return m;
-    const auto mean = meanPose();  // circular mean of the headings
-    m.x = mean.x();
-    m.y = mean.y();
-    m.phi = mean.phi();
+    const size_t n = m_particles.size();
+    if (n == 0) return m;
     double top = -1e300;
     for (const auto& q : m_particles) top = std::max(top, q.log_w);
-    double sw = 0;
-    for (const auto& q : m_particles) {
-        const double w = std::exp(q.log_w - top);
-        const Eigen::Vector3d v(q.d.x() - m.x, q.d.y() - m.y,
-                                mrpt::math::wrapToPi(q.d.phi() - m.phi));
-        m.cov += w * v * v.transpose();
-        sw += w;
+    std::vector<double> w(n);
+    double sw = 0, sc = 0, ss = 0;
+    for (size_t i = 0; i < n; i++) {
+        const auto& p = m_particles[i].d;
+        sw += (w[i] = std::exp(m_particles[i].log_w - top));
+        m.x += w[i] * p.x();
+        m.y += w[i] * p.y();
+        sc += w[i] * p.phi_cos();  // circular mean of the headings
+        ss += w[i] * p.phi_sin();
     }
-    m.cov /= sw;
+    m.x /= sw;
+    m.y /= sw;
+    m.phi = std::atan2(ss, sc);
+    for (size_t i = 0; i < n; i++) {
+        const auto& p = m_particles[i].d;
+        const Eigen::Vector3d v(p.x() - m.x, p.y() - m.y,
+                                mrpt::math::wrapToPi(p.phi() - m.phi));
+        m.cov.noalias() += (w[i] / sw) * v * v.transpose();
+    }
     return m;
 }
 

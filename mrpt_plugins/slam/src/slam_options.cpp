@@ -81,7 +81,7 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     const rfir::ini::CIniSection sec(
         c, s,
         {"method", "robot_particles", "resampling", "resample_ess", "start_std_xy",
-         "start_std_phi", "tag_update_pose"});
+         "start_std_phi", "tag_update_pose", "map_correction", "map_correction_min_std"});
     method = TMethod(sec.getEnum("method", kMethodNames, size_t(method)));
     robot_particles =
         unsigned(sec.getInt("robot_particles", int64_t(robot_particles), 1, 1000000));
@@ -99,6 +99,9 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     start_std_phi = sec.getDouble("start_std_phi", start_std_phi, R::closed(0, M_PI));
     tag_update_pose = TTagUpdatePose(
         sec.getEnum("tag_update_pose", kTagPoseNames, size_t(tag_update_pose)));
+    map_correction = sec.getBool("map_correction", map_correction);
+    map_correction_min_std =
+        sec.getDouble("map_correction_min_std", map_correction_min_std, R::aboveZero(1));
 }
 
 void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -113,6 +116,10 @@ void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "start_std_phi", start_std_phi, -1, -1, "initial spread [rad]");
     c.write(s, "tag_update_pose", kTagPoseNames[size_t(tag_update_pose)], -1, -1,
             "pf/ps weigh-first: tags updated at the posterior or predicted mean");
+    c.write(s, "map_correction", map_correction, -1, -1,
+            "pf/ps: tags follow the robot's loop-closure corrections");
+    c.write(s, "map_correction_min_std", map_correction_min_std, -1, -1,
+            "[m] a tag's share of the robot error below which it stops following");
 }
 
 PF::TParticleFilterOptions TSlamOptions::pfOptions() const {

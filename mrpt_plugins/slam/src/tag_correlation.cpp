@@ -24,13 +24,14 @@ void CTagRobotCorrelation::add(const std::string& id, bool landmark, double tx, 
     m_active.push_back(e);
 }
 
-size_t CTagRobotCorrelation::correct(const TPoseMoments& before, const TPoseMoments& after,
-                                     const TShift& shift) {
+size_t CTagRobotCorrelation::correct(const TPoseMoments& before,
+                                     const TPoseMoments& after, const TShift& shift) {
     if (m_active.empty()) return 0;
     const Eigen::Matrix3d& P = before.cov;
     // A weighing that did not narrow the cloud (a split, a flat weighing) is
     // no Gaussian update; a collapsed cloud has no usable inverse.
-    if (!(after.cov.determinant() < P.determinant()) || P.determinant() <= 1e-30) return 0;
+    if (!(after.cov.determinant() < P.determinant()) || P.determinant() <= 1e-30)
+        return 0;
     const Eigen::LDLT<Eigen::Matrix3d> ldlt(P);
     const Eigen::Vector3d d(after.x - before.x, after.y - before.y,
                             mrpt::math::wrapToPi(after.phi - before.phi));
@@ -56,13 +57,12 @@ size_t CTagRobotCorrelation::correct(const TPoseMoments& before, const TPoseMome
         e.refY = after.y;
         moved++;
     }
-    m_active.erase(
-        std::remove_if(m_active.begin(), m_active.end(),
-                       [&](const TEntry& e) {
-                           return positionVariance(e.C) < m_minVar ||
-                                  0.5 * e.T.trace() < m_minVar;
-                       }),
-        m_active.end());
+    m_active.erase(std::remove_if(m_active.begin(), m_active.end(),
+                                  [&](const TEntry& e) {
+                                      return positionVariance(e.C) < m_minVar ||
+                                             0.5 * e.T.trace() < m_minVar;
+                                  }),
+                   m_active.end());
     return moved;
 }
 
@@ -74,6 +74,33 @@ void CTagRobotCorrelation::drop(const std::vector<std::string>& ids) {
                                              ids.end();
                                   }),
                    m_active.end());
+}
+
+void CMapCorrection::clear() {
+    m_corr.clear();
+    m_pending.clear();
+    m_pendingIds.clear();
+}
+
+void CMapCorrection::weighed(const TPoseMoments& before, const TPoseMoments& after,
+                             const std::vector<std::string>& ids) {
+    m_pending.emplace_back(before, after);
+    m_pendingIds.insert(m_pendingIds.end(), ids.begin(), ids.end());
+}
+
+size_t CMapCorrection::settle(bool reset, bool mapping,
+                              const CTagRobotCorrelation::TShift& shift) {
+    if (reset) {
+        clear();
+        return 0;
+    }
+    if (m_pending.empty() || !mapping) return 0;
+    m_corr.drop(m_pendingIds);
+    size_t moved = 0;
+    for (const auto& [b, a] : m_pending) moved += m_corr.correct(b, a, shift);
+    m_pending.clear();
+    m_pendingIds.clear();
+    return moved;
 }
 
 }  // namespace rfir::slam

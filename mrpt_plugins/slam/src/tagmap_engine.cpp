@@ -11,7 +11,6 @@
 #include <rfir/models/random.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <sstream>
 
@@ -60,8 +59,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
         resetTimes_.clear();
         slip_.reset();
-        corr_.clear();
-        pendingBefore_.reset();
+        corr_ = CMapCorrection(cfg_.slam.map_correction_min_std);
         pose_ = start;
     }
     void step(const TSlamInput& in) override;
@@ -99,33 +97,37 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     }
     void insert(const mrpt::poses::CPose2D& at) {
         if (map_.usesRobotSamples()) drawRobotSamples();
-        std::vector<const TDetection*> fresh;
-        if (correctMap_)
+        std::vector<const TDetection*> fresh;  // first reads: join the correction
+        if (cfg_.slam.map_correction)
             for (const auto& d : dets_)
-                if (!(d.kind == TDetection::Kind::RFID ? map_.getTag(d.id)
-                                                       : map_.getLandmark(d.id)))
-                    fresh.push_back(&d);
+                if (!entry(d)) fresh.push_back(&d);
         for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
         if (fresh.empty()) return;
         const auto m = pf_.poseMoments();
-        for (const auto* d : fresh) {
-            const bool lm = d->kind != TDetection::Kind::RFID;
-            const auto* e = lm ? map_.getLandmark(d->id) : map_.getTag(d->id);
-            if (e) corr_.add(d->id, lm, e->estimate.mean.x, e->estimate.mean.y, m);
-        }
+        for (const auto* d : fresh)
+            if (const auto* e = entry(*d))
+                corr_.mapped(d->id, d->kind != TDetection::Kind::RFID, e->estimate.mean.x,
+                             e->estimate.mean.y, m);
     }
-    /** After a weighing by known tags: the tags still correlated with the
-     * robot follow its correction (tag_correlation.h). */
-    void correctMap(const TPoseMoments& before) {
-        const auto after = pf_.poseMoments();
-        double mx = 0;
-        const size_t n = corr_.correct(before, after, [&](const std::string& id, bool lm, double dx,
-                                          double dy) { mx = std::max(mx, std::hypot(dx, dy)); map_.translateEntry(id, lm, dx, dy); });
-        if (std::getenv("RFIR_MAPCORR_DEBUG"))
-            fprintf(stderr, "corr t=%.1f d=(%.3f %.3f %.4f) sd=(%.3f %.3f %.4f)->(%.3f %.3f %.4f) n=%zu act=%zu max=%.3f\n", t_,
-                    after.x - before.x, after.y - before.y, after.phi - before.phi,
-                    std::sqrt(before.cov(0,0)), std::sqrt(before.cov(1,1)), std::sqrt(before.cov(2,2)),
-                    std::sqrt(after.cov(0,0)), std::sqrt(after.cov(1,1)), std::sqrt(after.cov(2,2)), n, corr_.size(), mx);
+    const CRFIDTagParticleMap::TTagEntry* entry(const TDetection& d) const {
+        return d.kind == TDetection::Kind::RFID ? map_.getTag(d.id)
+                                                : map_.getLandmark(d.id);
+    }
+    /** End of a weighing step with map_correction: the tags still correlated
+     * with the robot follow its correction (tag_correlation.h). */
+    void correctMap(bool reset) {
+        size_t reads = 0;
+        std::vector<std::string> ids;
+        for (const auto& r : reads_)
+            for (const auto& rd : r.reads) {
+                reads++;
+                if (rd.id) ids.push_back(*rd.id);
+            }
+        if (reads > 0) corr_.weighed(before_, pf_.poseMoments(), ids);
+        corr_.settle(reset, mapThisStep_,
+                     [&](const std::string& id, bool lm, double dx, double dy) {
+                         map_.translateEntry(id, lm, dx, dy);
+                     });
     }
     /** tag_robot_pose = samples*: the map places readers by robot poses drawn
      * from the current (weighted) robot set; O(M) per step, not per tag. */
@@ -147,10 +149,8 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     mrpt::bayes::CParticleFilter filter_;
     CKidnapMonitor kidnap_;
     CSlipAwareMotion slip_;  //!< the motion model's slip memory
-    CTagRobotCorrelation corr_;
-    bool correctMap_ = std::getenv("RFIR_MAPCORR") != nullptr;
-    TPoseMoments before_;  //!< robot pose moments before the weighing
-    std::optional<TPoseMoments> pendingBefore_;
+    CMapCorrection corr_;
+    TPoseMoments before_;  //!< robot pose moments before a weighing
     rfir::models::TRandom rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<TDetection> dets_;  //!< this step's detections
@@ -177,7 +177,11 @@ void CTagMapEngine::afterMotion() {
              cfg_.slam.tag_update_pose == TSlamOptions::TTagUpdatePose::Predicted)
         predictedForInsert_ = pf_.meanPose();
     resolveReads();
-    if (correctMap_) before_ = pf_.poseMoments();
+    if (cfg_.slam.map_correction) {
+        size_t n = 0;
+        for (const auto& r : reads_) n += r.reads.size();
+        if (n > 0) before_ = pf_.poseMoments();  // only a weighing corrects
+    }
     baseLogLik_.assign(pf_.m_particles.size(), 0.0);
 }
 
@@ -270,33 +274,12 @@ void CTagMapEngine::step(const TSlamInput& in) {
     checkKidnap();
     // 6. resample when the ESS is low (MRPT's scheme, engine's generator);
     rfir::models::resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
-    size_t weighed = 0;
-    std::vector<std::string> weighedIds;
-    for (const auto& r : reads_) {
-        weighed += r.reads.size();
-        for (const auto& rd : r.reads)
-            if (rd.id) weighedIds.push_back(*rd.id);
-    }
+    // 7. PF/PS with map_correction: the tags mapped from an uncertain robot
+    // follow the weighing's correction of it;
+    if (cfg_.slam.map_correction)
+        correctMap(!resetTimes_.empty() && resetTimes_.back() == t_);
     reads_.clear();
-    const bool reset = !resetTimes_.empty() && resetTimes_.back() == t_;
-    if (std::getenv("RFIR_MAPCORR_DEBUG") && std::fmod(t_ + 1e-6, 2.0) < 0.1) {
-        const auto m = pf_.poseMoments();
-        fprintf(stderr, "cloud t=%.1f sd=(%.4f %.4f %.5f) weighed=%zu\n", t_, std::sqrt(m.cov(0,0)), std::sqrt(m.cov(1,1)), std::sqrt(m.cov(2,2)), weighed);
-    }
-    if (correctMap_) {
-        // A suspicious run defers the correction: applied from the moments
-        // before the run once it ends without a reset, dropped with one.
-        if (weighed > 0 && !pendingBefore_) pendingBefore_ = before_;
-        if (reset) {
-            corr_.clear();
-            pendingBefore_.reset();
-        } else if (pendingBefore_ && mapThisStep_) {
-            corr_.drop(weighedIds);
-            correctMap(*pendingBefore_);
-            pendingBefore_.reset();
-        }
-    }
-    // 7. the estimate, and the tag update of the revisit policies.
+    // 8. the estimate, and the tag update of the revisit policies.
     pose_ = pf_.meanPose();
     if (!literal_ && mapThisStep_)
         insert(predictedForInsert_ ? *predictedForInsert_ : pose_);

@@ -36,6 +36,13 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
     /** PF/PS with a weigh-first policy: the robot pose the tags are updated
      * with, "posterior" (after weighing) or "predicted" (before). */
     TTagUpdatePose tag_update_pose = TTagUpdatePose::Posterior;
+    /** PF/PS: tags mapped from an uncertain robot follow the robot's later
+     * corrections through their cross-covariance with it (tag_correlation.h;
+     * off: the seeds' algorithm, the map keeps a first lap's drift). */
+    bool map_correction = false;
+    /** m: a tag whose share of the robot's position error falls below this
+     * stops following the robot. */
+    double map_correction_min_std = 0.002;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;

@@ -68,4 +68,31 @@ class CTagRobotCorrelation {
     double m_minVar;
 };
 
+/** The map correction as the PF/PS engine runs it: a weighing's correction
+ * waits while the kidnap detector's run of disagreeing steps is open (the
+ * pose may be wrong), is applied once a step maps again, and is dropped with
+ * a sensor resetting (the correlations then mean nothing). */
+class CMapCorrection {
+  public:
+    explicit CMapCorrection(double minStd = 0.002) : m_corr(minStd) {}
+    void clear();
+    /** A tag (or landmark) first mapped at (tx, ty) from these moments. */
+    void mapped(const std::string& id, bool landmark, double tx, double ty,
+                const TPoseMoments& robot) {
+        m_corr.add(id, landmark, tx, ty, robot);
+    }
+    /** The reads of `ids` moved the robot's moments from `before` to `after`. */
+    void weighed(const TPoseMoments& before, const TPoseMoments& after,
+                 const std::vector<std::string>& ids);
+    /** End of a step: a resetting drops what waits; a step that maps applies
+     * it (the weighing tags leave the set first). Returns the tags moved. */
+    size_t settle(bool reset, bool mapping, const CTagRobotCorrelation::TShift& shift);
+    size_t size() const { return m_corr.size(); }
+
+  private:
+    CTagRobotCorrelation m_corr;
+    std::vector<std::pair<TPoseMoments, TPoseMoments>> m_pending;
+    std::vector<std::string> m_pendingIds;
+};
+
 }  // namespace rfir::slam

@@ -35,3 +35,7 @@ if(TARGET rfir_sim)
     SOURCES test_graph_smoother_robust.cpp
     LIBS rfir_slam rfir_sim rfir_eval)
 endif()
+# The map correction's algebra (tag_correlation.h) against the Kalman update.
+rfir_add_test(test_map_correction
+  SOURCES test_map_correction.cpp
+  LIBS rfir_slam)

@@ -410,3 +410,32 @@ TEST(MapReadCounts, WrittenAndReadBack) {
     EXPECT_EQ(*rfir::common::loadMapFile(p2)[0].reads, 7u);
     std::remove(p2.c_str());
 }
+
+// Issue 12's bar on two stock fault INIs (60 mm loop with slips; with bias,
+// slips, a dead reader and ghost reads), seeds 1-3: PF- and PS-SLAM within
+// 1.25 x FastSLAM's mean robot error with zero resets. Without the map
+// correction they missed it on 5 of these 6 runs (1.36-1.77 x: the one shared
+// map keeps the first lap's drift, docs/slam.md); with it, the summed error
+// must also fall. Thresholds are the issue's, set before the runs.
+TEST(MapCorrection, FaultInisWithinFastSlam) {
+    for (const char* ini : {"sim_faults_slips.ini", "sim_faults_combined.ini"}) {
+        const auto c =
+            rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini);
+        for (uint64_t seed = 1; seed <= 3; seed++) {
+            const auto sim = rfir::sim::simulate(c, seed);
+            const double fs = runMethod(sim, stockConfig("fastslam"), seed).robot;
+            for (const char* m : {"pf", "ps"}) {
+                const auto on = runMethod(sim, stockConfig(m), seed);
+                const auto off = runMethod(
+                    sim, stockConfig(m, {{"slam.map_correction", "false"}}), seed);
+                std::cout << ini << " seed " << seed << " " << m << ": " << 1e3 * on.robot
+                          << " mm (" << on.run.resets
+                          << " resets), without the correction " << 1e3 * off.robot
+                          << " mm, FastSLAM " << 1e3 * fs << " mm\n";
+                EXPECT_LE(on.robot, 1.25 * fs) << ini << " seed " << seed << " " << m;
+                EXPECT_EQ(on.run.resets, 0u) << ini << " seed " << seed << " " << m;
+                EXPECT_LT(on.robot, off.robot) << ini << " seed " << seed << " " << m;
+            }
+        }
+    }
+}

@@ -110,6 +110,45 @@ TEST(TagFixedLagSmoother, MoveIsExactOnceTheOldStatesLeave) {
     }
 }
 
+TEST(TagFixedLagSmoother, TranslateMovesEveryStoredStateByTheShift) {
+    // The map correction's shift moves the anchor: every current, smoothed
+    // and history state by (dx, dy) to within the 2^-20 m grid, and the
+    // estimate with them; the updates that follow draw as before.
+    TRandom rng(9), rngB(9);
+    TagFixedLagSmootherParams p;
+    p.lag = 5;
+    TagFixedLagSmoother a(p);
+    a.initUniform({1, 2, 0}, {0.2, 0.0, 0.03, 0.03}, rng);
+    const auto like = [](const TPoint2D& q) { return -(q.x - 1) * (q.x - 1) / 2e-4; };
+    for (int k = 0; k < 7; k++) a.update(like, rng);
+    TagFixedLagSmoother b = a;
+    const double dx = 0.123456, dy = -0.0421;
+    auto shifted = [&](std::vector<TPoint2D> v) {
+        for (auto& q : v) q.x += dx, q.y += dy;
+        return v;
+    };
+    const auto cur = shifted(a.particles()), sm = shifted(a.smoothedParticles()),
+               hist = shifted(a.history(3));
+    const auto est = a.estimate();
+    a.translate(dx, dy);
+    EXPECT_LT(maxDiff(a.particles(), cur), 1e-6);
+    EXPECT_LT(maxDiff(a.smoothedParticles(), sm), 1e-6);
+    EXPECT_LT(maxDiff(a.history(3), hist), 1e-6);
+    EXPECT_NEAR(a.estimate().mean.x, est.mean.x + dx, 1e-6);
+    EXPECT_NEAR(a.estimate().mean.y, est.mean.y + dy, 1e-6);
+    EXPECT_NEAR(a.estimate().cov(0, 0), est.cov(0, 0), 1e-9);
+    // The same move through moveStates, then the same updates: the same
+    // states to within the grid.
+    b.moveStates([&](size_t, const TPoint2D& q) { return TPoint2D(q.x + dx, q.y + dy); });
+    rngB = rng;
+    const auto likeMoved = [&](const TPoint2D& q) { return like({q.x - dx, q.y - dy}); };
+    for (int k = 0; k < 3; k++) {
+        a.update(likeMoved, rng);
+        b.update(likeMoved, rngB);
+    }
+    EXPECT_LT(maxDiff(a.particles(), b.particles()), 1e-5);
+}
+
 TEST(TagEstimators, StateRoundTripContinuesIdentically) {
     for (const char* name : {kParticleFilterName, kFixedLagSmootherName}) {
         TTagEstimatorParams p;

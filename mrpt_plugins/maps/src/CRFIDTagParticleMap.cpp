@@ -52,9 +52,7 @@ bool CRFIDTagParticleMap::translateEntry(const std::string& id, bool landmark, d
     const auto it = table.find(id);
     if (it == table.end()) return false;
     TTagEntry& e = it->second;
-    e.estimator->moveStates([&](size_t, const mrpt::math::TPoint2D& p) {
-        return mrpt::math::TPoint2D(p.x + dx, p.y + dy);
-    });
+    e.estimator->translate(dx, dy);
     // What the robot is weighed against during a visit moves with the tag.
     e.visitStartEstimate.mean.x += dx;
     e.visitStartEstimate.mean.y += dy;

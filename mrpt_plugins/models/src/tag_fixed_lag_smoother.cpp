@@ -196,6 +196,11 @@ void TagFixedLagSmoother::moveStates(const TStateMove& f) {
     recomputeEstimate();
 }
 
+void TagFixedLagSmoother::translate(double dx, double dy) {
+    m_anchor = TAnchor(mrpt::math::TPoint2D(m_anchor.x() + dx, m_anchor.y() + dy));
+    recomputeEstimate();
+}
+
 std::vector<mrpt::math::TPoint2D> TagFixedLagSmoother::particles() const {
     std::vector<mrpt::math::TPoint2D> v(m_cur.size());
     for (size_t j = 0; j < v.size(); j++) v[j] = m_anchor.world(m_cur[j]);

@@ -1,6 +1,5 @@
 #include <rfir/slam/CRobotPoseParticles.h>
 
-#include <mrpt/math/wrap2pi.h>
 #include <rfir/slam/motion_model.h>
 #include <rfir/slam/slam_options.h>
 
@@ -45,31 +44,48 @@ mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
 }
 
 TPoseMoments CRobotPoseParticles::poseMoments() const {
-    TPoseMoments m;
-    const size_t n = m_particles.size();
-    if (n == 0) return m;
+    if (m_particles.empty()) return {};
     double top = -1e300;
     for (const auto& q : m_particles) top = std::max(top, q.log_w);
-    std::vector<double> w(n);
-    double sw = 0, sc = 0, ss = 0;
-    for (size_t i = 0; i < n; i++) {
-        const auto& p = m_particles[i].d;
-        sw += (w[i] = std::exp(m_particles[i].log_w - top));
-        m.x += w[i] * p.x();
-        m.y += w[i] * p.y();
-        sc += w[i] * p.phi_cos();  // circular mean of the headings
-        ss += w[i] * p.phi_sin();
+    CPoseMomentSums sums;
+    const auto& r = m_particles.front().d;
+    sums.start(r.x(), r.y(), r.phi());
+    for (const auto& q : m_particles)
+        sums.add(q.log_w == top ? 1.0 : std::exp(q.log_w - top), q.d.x(), q.d.y(),
+                 q.d.phi());
+    return sums.moments();
+}
+
+template <class W>
+void CRobotPoseParticles::accumulate(CPoseMomentSums& sums, W weight) const {
+    const auto& r = m_particles.front().d;
+    sums.start(r.x(), r.y(), r.phi());
+    // Iterators, not indices: the particles live in MRPT's std::deque.
+    size_t i = 0;
+    for (const auto& q : m_particles) {
+        // Through a const pose: CPose2D's non-const phi() resets the cached
+        // cos and sin.
+        const CParticlePose2D& d = q.d;
+        sums.add(weight(i++, q.log_w), d.x(), d.y(), d.phi());
     }
-    m.x /= sw;
-    m.y /= sw;
-    m.phi = std::atan2(ss, sc);
-    for (size_t i = 0; i < n; i++) {
-        const auto& p = m_particles[i].d;
-        const Eigen::Vector3d v(p.x() - m.x, p.y() - m.y,
-                                mrpt::math::wrapToPi(p.phi() - m.phi));
-        m.cov.noalias() += (w[i] / sw) * v * v.transpose();
-    }
-    return m;
+}
+
+double CRobotPoseParticles::priorWeight(size_t i, double lw) const {
+    // The weights before a weighing are the last normalisation's (their exp
+    // kept: a comparison instead of an exp) or, after a resampling, all 0;
+    // their largest log is 0 either way.
+    if (i < m_normLogW.size() && m_normLogW[i] == lw) return m_normW[i];
+    return lw == 0 ? 1.0 : std::exp(lw);
+}
+
+std::optional<TPoseMoments> CRobotPoseParticles::priorMoments() const {
+    if (!m_priorValid) return std::nullopt;
+    return m_prior.moments();
+}
+
+std::optional<TPoseMoments> CRobotPoseParticles::posteriorMoments() const {
+    if (!m_postValid) return std::nullopt;
+    return m_post.moments();
 }
 
 void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
@@ -77,6 +93,7 @@ void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
     for (const auto& q : m_particles) best = std::max(best, q.log_w);
     m_particles.at(i).d = p;
     m_particles.at(i).log_w = best;
+    m_postValid = false;
     m_ess = -1;
 }
 
@@ -110,6 +127,10 @@ double CRobotPoseParticles::normalizeWeights(double* out_max_log_w) {
         s1 += w;
         s2 += w * w;
     }
+    // The posterior moments in a loop of their own: the exp above is a call,
+    // which would spill the accumulators on every particle.
+    m_postValid = m_track && !m_particles.empty();
+    if (m_postValid) accumulate(m_post, [&](size_t i, double) { return m_normW[i]; });
     m_ess = s2 > 0 ? s1 * s1 / (s2 * double(m_particles.size())) : 0;
     if (out_max_log_w) *out_max_log_w = maxW;
     return std::exp(maxW - minW);
@@ -152,17 +173,24 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
             m_moves);
     m_ess = -1;
     m_stepLogLik.clear();
+    m_priorValid = m_postValid = false;
     if (!m_model) return;
     m_model->afterMotion();
     if (!m_model->weighs()) return;
     m_stepLogLik.resize(m_particles.size());
+    // The prior moments before the weighing, in a loop of their own (the
+    // weighing's virtual call would spill the accumulators per particle).
+    m_priorValid = m_track && !m_particles.empty();
+    if (m_priorValid)
+        accumulate(m_prior, [&](size_t i, double lw) { return priorWeight(i, lw); });
     for (size_t i = 0; i < m_particles.size(); i++) {
-        const double ll = m_model->logLikelihood(i, m_particles[i].d);
+        auto& q = m_particles[i];
+        const double ll = m_model->logLikelihood(i, q.d);
         if (!std::isfinite(ll))
             throw std::runtime_error(
                 "the landmark map returned a non-finite log-likelihood");
         m_stepLogLik[i] = ll;
-        m_particles[i].log_w += ll;
+        q.log_w += ll;
     }
 }
 

@@ -15,6 +15,19 @@ double positionVariance(const Eigen::Matrix<double, 2, 3>& C) {
 }
 }  // namespace
 
+TPoseMoments CPoseMomentSums::moments() const {
+    TPoseMoments m;
+    if (!(m_w > 0)) return m;
+    const Eigen::Vector3d mean(m_x / m_w, m_y / m_w, m_p / m_w);
+    Eigen::Matrix3d second;
+    second << m_xx, m_xy, m_xp, m_xy, m_yy, m_yp, m_xp, m_yp, m_pp;
+    m.x = m_rx + mean.x();
+    m.y = m_ry + mean.y();
+    m.phi = mrpt::math::wrapToPi(m_rp + mean.z());
+    m.cov = second / m_w - mean * mean.transpose();
+    return m;
+}
+
 void CTagRobotCorrelation::add(const std::string& id, bool landmark, double tx, double ty,
                                const TPoseMoments& r) {
     Eigen::Matrix<double, 2, 3> J;

@@ -103,7 +103,9 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                 if (!entry(d)) fresh.push_back(&d);
         for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
         if (fresh.empty()) return;
-        const auto m = pf_.poseMoments();
+        // The robot's moments after this step's weighing, or now if it did not weigh.
+        const auto post = pf_.posteriorMoments();
+        const auto m = post ? *post : pf_.poseMoments();
         for (const auto* d : fresh)
             if (const auto* e = entry(*d))
                 corr_.mapped(d->id, d->kind != TDetection::Kind::RFID, e->estimate.mean.x,
@@ -123,7 +125,8 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                 reads++;
                 if (rd.id) ids.push_back(*rd.id);
             }
-        if (reads > 0) corr_.weighed(before_, pf_.poseMoments(), ids);
+        const auto before = pf_.priorMoments(), after = pf_.posteriorMoments();
+        if (reads > 0 && before && after) corr_.weighed(*before, *after, ids);
         corr_.settle(reset, mapThisStep_,
                      [&](const std::string& id, bool lm, double dx, double dy) {
                          map_.translateEntry(id, lm, dx, dy);
@@ -150,7 +153,6 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     CKidnapMonitor kidnap_;
     CSlipAwareMotion slip_;  //!< the motion model's slip memory
     CMapCorrection corr_;
-    TPoseMoments before_;  //!< robot pose moments before a weighing
     rfir::models::TRandom rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<TDetection> dets_;  //!< this step's detections
@@ -177,12 +179,12 @@ void CTagMapEngine::afterMotion() {
              cfg_.slam.tag_update_pose == TSlamOptions::TTagUpdatePose::Predicted)
         predictedForInsert_ = pf_.meanPose();
     resolveReads();
-    if (cfg_.slam.map_correction) {
-        size_t n = 0;
-        for (const auto& r : reads_) n += r.reads.size();
-        if (n > 0) before_ = pf_.poseMoments();  // only a weighing corrects
-    }
     baseLogLik_.assign(pf_.m_particles.size(), 0.0);
+    // The map correction needs the weighing's moments only when known tags
+    // weigh the robot (the particle loops then accumulate them).
+    bool weighing = false;
+    for (const auto& r : reads_) weighing = weighing || !r.reads.empty();
+    pf_.trackMoments(cfg_.slam.map_correction && weighing);
 }
 
 void CTagMapEngine::resolveReads() {

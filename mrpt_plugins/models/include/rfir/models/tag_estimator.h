@@ -65,6 +65,13 @@ class CTagEstimator {
     /** Moves every stored state of particle j by f(j, .) (f rigid per j, as the
      * map's samples_visit commit), refreshes the estimate. */
     virtual void moveStates(const TStateMove& f) = 0;
+    /** Moves every stored state by (dx, dy) (the map correction), refreshes
+     * the estimate; an estimator may do it cheaper than moveStates. */
+    virtual void translate(double dx, double dy) {
+        moveStates([dx, dy](size_t, const mrpt::math::TPoint2D& p) {
+            return mrpt::math::TPoint2D(p.x + dx, p.y + dy);
+        });
+    }
 
     virtual const PointEstimate& estimate() const = 0;
     /** Current (filtered) states, world frame. */

@@ -53,6 +53,10 @@ class TagFixedLagSmoother : public CTagEstimator {
      * the window as their mean, one per update: the sum is exact again once
      * they are all out (lag - 1 updates later). */
     void moveStates(const TStateMove& f) override;
+    /** Every state is an offset from the anchor: moving the anchor moves them
+     * all (by the translation rounded to the 2^-20 m grid), O(L) for the
+     * estimate instead of re-quantising the histories. */
+    void translate(double dx, double dy) override;
 
     const PointEstimate& estimate() const override { return m_est; }
     std::vector<mrpt::math::TPoint2D> particles() const override;

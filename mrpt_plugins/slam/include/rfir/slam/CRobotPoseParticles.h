@@ -15,6 +15,7 @@
 #include <rfir/slam/CParticlePose2D.h>
 #include <rfir/slam/tag_correlation.h>
 
+#include <optional>
 #include <vector>
 
 namespace rfir::slam {
@@ -48,8 +49,18 @@ class CRobotPoseParticles
     void setStepModel(IStepModel* m) { m_model = m; }
 
     mrpt::poses::CPose2D meanPose() const;
-    /** Weighted mean pose and covariance of the particles. */
+    /** Weighted mean pose and covariance of the particles (one pass). */
     TPoseMoments poseMoments() const;
+    /** @name The moments of a step's weighing, accumulated in the loops that
+     * visit every particle anyway (no pass of their own) once trackMoments
+     * is on: the moved particles under the weights before the weighing
+     * (prior), and under the normalised weights after it (posterior, before
+     * any resampling). Empty when this step did not weigh.
+     * @{ */
+    void trackMoments(bool on) { m_track = on; }
+    std::optional<TPoseMoments> priorMoments() const;
+    std::optional<TPoseMoments> posteriorMoments() const;
+    /** @} */
 
     /** @name The last step's weighing, as it weighed: per-particle
      * log-likelihoods and the log of their mean under the weights before it
@@ -88,6 +99,14 @@ class CRobotPoseParticles
      * reuses while the particles still hold those log-weights (checked: a
      * comparison per particle instead of an exp). */
     std::vector<double> m_normLogW, m_normW;
+    bool m_track = false;             //!< accumulate the weighing's moments
+    CPoseMomentSums m_prior, m_post;  //!< this step's, when m_*Valid
+    bool m_priorValid = false, m_postValid = false;
+    /** Linear weight of particle i (log-weight lw) before this step's weighing. */
+    double priorWeight(size_t i, double lw) const;
+    /** sums := the moments of the particles under weight(i, log_w). */
+    template <class W>
+    void accumulate(CPoseMomentSums& sums, W weight) const;
 
     void prediction_and_update_pfStandardProposal(
         const mrpt::obs::CActionCollection* action,

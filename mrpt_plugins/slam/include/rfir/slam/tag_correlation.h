@@ -16,16 +16,58 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace rfir::slam {
 /** Weighted mean and covariance of the robot particles' poses (x, y, phi;
- * the heading's mean and deviations circular). */
+ * the headings as deviations from a reference heading, wrapped). */
 struct TPoseMoments {
     double x = 0, y = 0, phi = 0;
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+};
+
+/** TPoseMoments in one pass, accumulated inside loops that already visit
+ * every particle: raw weighted sums of the deviations from a reference pose
+ * (one of the particles, so that millimetre spreads on coordinates of tens
+ * of metres lose nothing to cancellation). Headings are kept in [-pi, pi],
+ * so one wrap of a difference suffices. */
+class CPoseMomentSums {
+  public:
+    void start(double x, double y, double phi) {
+        *this = CPoseMomentSums();
+        m_rx = x;
+        m_ry = y;
+        m_rp = phi;
+    }
+    void add(double w, double x, double y, double phi) {
+        // Scalars, the six distinct second moments: this runs per particle.
+        const double dx = x - m_rx, dy = y - m_ry, dp = wrapOnce(phi - m_rp);
+        const double wx = w * dx, wy = w * dy, wp = w * dp;
+        m_w += w;
+        m_x += wx;
+        m_y += wy;
+        m_p += wp;
+        m_xx += wx * dx;
+        m_yy += wy * dy;
+        m_pp += wp * dp;
+        m_xy += wx * dy;
+        m_xp += wx * dp;
+        m_yp += wy * dp;
+    }
+    /** The weighted mean and covariance (biased: normalised by the weights). */
+    TPoseMoments moments() const;
+
+  private:
+    static double wrapOnce(double a) {
+        return a > M_PI ? a - 2 * M_PI : (a < -M_PI ? a + 2 * M_PI : a);
+    }
+    double m_rx = 0, m_ry = 0, m_rp = 0;  //!< the reference pose
+    double m_w = 0, m_x = 0, m_y = 0, m_p = 0;
+    double m_xx = 0, m_yy = 0, m_pp = 0, m_xy = 0, m_xp = 0, m_yp = 0;
 };
 
 class CTagRobotCorrelation {

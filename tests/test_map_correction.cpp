@@ -153,3 +153,18 @@ TEST(MapCorrection, PendingCorrectionsWaitForAMappingStepOrDropWithAReset) {
     EXPECT_EQ(r.size(), 0u);
     EXPECT_TRUE(s2.by.empty());
 }
+
+// At most maxTags tags follow the robot: a new one pushes out the oldest, so
+// a correction's cost does not grow with the map.
+TEST(MapCorrection, TheOldestTagLeavesBeyondTheCap) {
+    const Eigen::Matrix3d P = robotCov();
+    const auto b = moments(0, 0, 0, P);
+    CTagRobotCorrelation c(0.001, 2);
+    for (const char* id : {"a", "b", "c"}) c.add(id, false, 0.1, 0, b);
+    EXPECT_EQ(c.size(), 2u);
+    TShifts s;
+    EXPECT_EQ(c.correct(b, moments(0.1, 0, 0, 0.5 * P), s.fn()), 2u);
+    EXPECT_EQ(s.by.count("a"), 0u);
+    EXPECT_EQ(s.by.count("b"), 1u);
+    EXPECT_EQ(s.by.count("c"), 1u);
+}

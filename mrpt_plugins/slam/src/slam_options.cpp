@@ -81,7 +81,8 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     const rfir::ini::CIniSection sec(
         c, s,
         {"method", "robot_particles", "resampling", "resample_ess", "start_std_xy",
-         "start_std_phi", "tag_update_pose", "map_correction", "map_correction_min_std"});
+         "start_std_phi", "tag_update_pose", "map_correction", "map_correction_min_std",
+         "map_correction_max_tags"});
     method = TMethod(sec.getEnum("method", kMethodNames, size_t(method)));
     robot_particles =
         unsigned(sec.getInt("robot_particles", int64_t(robot_particles), 1, 1000000));
@@ -102,6 +103,8 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     map_correction = sec.getBool("map_correction", map_correction);
     map_correction_min_std =
         sec.getDouble("map_correction_min_std", map_correction_min_std, R::aboveZero(1));
+    map_correction_max_tags = unsigned(sec.getInt(
+        "map_correction_max_tags", int64_t(map_correction_max_tags), 1, 10000000));
 }
 
 void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -120,6 +123,8 @@ void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
             "pf/ps: tags follow the robot's loop-closure corrections");
     c.write(s, "map_correction_min_std", map_correction_min_std, -1, -1,
             "[m] a tag's share of the robot error below which it stops following");
+    c.write(s, "map_correction_max_tags", int(map_correction_max_tags), -1, -1,
+            "at most this many tags follow the robot (the oldest leave first)");
 }
 
 PF::TParticleFilterOptions TSlamOptions::pfOptions() const {

@@ -35,6 +35,7 @@ void CTagRobotCorrelation::add(const std::string& id, bool landmark, double tx, 
     TEntry e{id, landmark, J * r.cov, J * r.cov * J.transpose(), r.x, r.y};
     if (positionVariance(e.C) < m_minVar) return;
     m_active.push_back(e);
+    if (m_active.size() > m_maxTags) m_active.pop_front();
 }
 
 size_t CTagRobotCorrelation::correct(const TPoseMoments& before,

@@ -59,7 +59,8 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
         resetTimes_.clear();
         slip_.reset();
-        corr_ = CMapCorrection(cfg_.slam.map_correction_min_std);
+        corr_ = CMapCorrection(cfg_.slam.map_correction_min_std,
+                               cfg_.slam.map_correction_max_tags);
         pose_ = start;
     }
     void step(const TSlamInput& in) override;

@@ -43,6 +43,9 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
     /** m: a tag whose share of the robot's position error falls below this
      * stops following the robot. */
     double map_correction_min_std = 0.002;
+    /** At most this many tags follow the robot (the oldest leave first): a
+     * correction's cost stays bounded whatever the map's size. */
+    unsigned map_correction_max_tags = 1000;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;

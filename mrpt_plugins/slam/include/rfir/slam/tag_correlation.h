@@ -18,6 +18,7 @@
 
 #include <cmath>
 
+#include <deque>
 #include <functional>
 #include <string>
 #include <vector>
@@ -77,7 +78,11 @@ class CTagRobotCorrelation {
 
     /** minStd (m): a tag whose cross-covariance with the robot position has
      * shrunk below minStd^2 leaves the set: it no longer moves with it. */
-    explicit CTagRobotCorrelation(double minStd = 0.002) : m_minVar(minStd * minStd) {}
+    /** maxTags: at most this many tags follow the robot; a new one pushes
+     * out the oldest (so a correction costs O(maxTags) whatever the map's
+     * size; in the stock runs the set stayed under 150). */
+    explicit CTagRobotCorrelation(double minStd = 0.002, size_t maxTags = 1000)
+        : m_minVar(minStd * minStd), m_maxTags(maxTags) {}
 
     void clear() { m_active.clear(); }
     /** A tag (or landmark) just mapped at (tx, ty) from a robot with these
@@ -106,8 +111,9 @@ class CTagRobotCorrelation {
         Eigen::Matrix2d T;
         double refX = 0, refY = 0;  //!< robot mean position C refers to
     };
-    std::vector<TEntry> m_active;
+    std::deque<TEntry> m_active;  //!< oldest first
     double m_minVar;
+    size_t m_maxTags;
 };
 
 /** The map correction as the PF/PS engine runs it: a weighing's correction
@@ -116,7 +122,8 @@ class CTagRobotCorrelation {
  * a sensor resetting (the correlations then mean nothing). */
 class CMapCorrection {
   public:
-    explicit CMapCorrection(double minStd = 0.002) : m_corr(minStd) {}
+    explicit CMapCorrection(double minStd = 0.002, size_t maxTags = 1000)
+        : m_corr(minStd, maxTags) {}
     void clear();
     /** A tag (or landmark) first mapped at (tx, ty) from these moments. */
     void mapped(const std::string& id, bool landmark, double tx, double ty,

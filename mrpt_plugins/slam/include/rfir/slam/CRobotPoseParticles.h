@@ -51,11 +51,11 @@ class CRobotPoseParticles
     mrpt::poses::CPose2D meanPose() const;
     /** Weighted mean pose and covariance of the particles (one pass). */
     TPoseMoments poseMoments() const;
-    /** @name The moments of a step's weighing, accumulated in the loops that
-     * visit every particle anyway (no pass of their own) once trackMoments
-     * is on: the moved particles under the weights before the weighing
-     * (prior), and under the normalised weights after it (posterior, before
-     * any resampling). Empty when this step did not weigh.
+    /** @name The moments of a step's weighing (the map correction's input),
+     * summed in one pass each while trackMoments is on: the moved particles
+     * under the weights before the weighing (prior), and under the
+     * normalised weights after it (posterior, before any resampling). Empty
+     * when this step did not weigh.
      * @{ */
     void trackMoments(bool on) { m_track = on; }
     std::optional<TPoseMoments> priorMoments() const;

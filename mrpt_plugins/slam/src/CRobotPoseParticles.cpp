@@ -48,11 +48,8 @@ TPoseMoments CRobotPoseParticles::poseMoments() const {
     double top = -1e300;
     for (const auto& q : m_particles) top = std::max(top, q.log_w);
     CPoseMomentSums sums;
-    const auto& r = m_particles.front().d;
-    sums.start(r.x(), r.y(), r.phi());
-    for (const auto& q : m_particles)
-        sums.add(q.log_w == top ? 1.0 : std::exp(q.log_w - top), q.d.x(), q.d.y(),
-                 q.d.phi());
+    accumulate(sums,
+               [top](size_t, double lw) { return lw == top ? 1.0 : std::exp(lw - top); });
     return sums.moments();
 }
 

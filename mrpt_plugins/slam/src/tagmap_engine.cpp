@@ -25,13 +25,18 @@ struct TTagMapSettings {
 namespace {
 /** This step's detections of landmarks the map already has: where sensor
  * resetting may put the robot. */
+/** The map's entry for a detection's tag or landmark, if mapped. */
+const CRFIDTagParticleMap::TTagEntry* mapEntry(const CRFIDTagParticleMap& map,
+                                               const TDetection& d) {
+    return d.kind == TDetection::Kind::RFID ? map.getTag(d.id) : map.getLandmark(d.id);
+}
+
 std::vector<TAnchor> knownAnchors(const CRFIDTagParticleMap& map,
                                   const std::vector<TDetection>& dets) {
     std::vector<TAnchor> out;
     for (const auto& d : dets) {
-        const auto* e =
-            d.kind == TDetection::Kind::RFID ? map.getTag(d.id) : map.getLandmark(d.id);
-        if (e) out.push_back({d, e->estimate.mean.x, e->estimate.mean.y});
+        if (const auto* e = mapEntry(map, d))
+            out.push_back({d, e->estimate.mean.x, e->estimate.mean.y});
     }
     return out;
 }
@@ -101,33 +106,30 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         std::vector<const TDetection*> fresh;  // first reads: join the correction
         if (cfg_.slam.map_correction)
             for (const auto& d : dets_)
-                if (!entry(d)) fresh.push_back(&d);
+                if (!mapEntry(map_, d)) fresh.push_back(&d);
         for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
         if (fresh.empty()) return;
         // The robot's moments after this step's weighing, or now if it did not weigh.
         const auto post = pf_.posteriorMoments();
         const auto m = post ? *post : pf_.poseMoments();
         for (const auto* d : fresh)
-            if (const auto* e = entry(*d))
+            if (const auto* e = mapEntry(map_, *d))
                 corr_.mapped(d->id, d->kind != TDetection::Kind::RFID, e->estimate.mean.x,
                              e->estimate.mean.y, m);
-    }
-    const CRFIDTagParticleMap::TTagEntry* entry(const TDetection& d) const {
-        return d.kind == TDetection::Kind::RFID ? map_.getTag(d.id)
-                                                : map_.getLandmark(d.id);
     }
     /** End of a weighing step with map_correction: the tags still correlated
      * with the robot follow its correction (tag_correlation.h). */
     void correctMap(bool reset) {
-        size_t reads = 0;
-        std::vector<std::string> ids;
-        for (const auto& r : reads_)
-            for (const auto& rd : r.reads) {
-                reads++;
-                if (rd.id) ids.push_back(*rd.id);
-            }
+        // The moments exist only for a step that known tags weighed
+        // (afterMotion turns their tracking on).
         const auto before = pf_.priorMoments(), after = pf_.posteriorMoments();
-        if (reads > 0 && before && after) corr_.weighed(*before, *after, ids);
+        if (before && after) {
+            std::vector<std::string> ids;
+            for (const auto& r : reads_)
+                for (const auto& rd : r.reads)
+                    if (rd.id) ids.push_back(*rd.id);
+            corr_.weighed(*before, *after, ids);
+        }
         corr_.settle(reset, mapThisStep_,
                      [&](const std::string& id, bool lm, double dx, double dy) {
                          map_.translateEntry(id, lm, dx, dy);

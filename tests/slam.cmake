@@ -39,3 +39,9 @@ endif()
 rfir_add_test(test_map_correction
   SOURCES test_map_correction.cpp
   LIBS rfir_slam)
+if(TARGET rfir_sim)
+  # The per-particle heading drift of [motion] (issue 12: biased odometry).
+  rfir_add_test(test_heading_drift
+    SOURCES test_heading_drift.cpp
+    LIBS rfir_slam rfir_sim rfir_eval)
+endif()

@@ -43,6 +43,10 @@ void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, doub
                                             start.y() + rng.drawGaussian1D(0, stdXY),
                                             start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
+    if (driftStd_ > 0)
+        drawDriftPrior(
+            m_particles, [](auto& p) -> CParticlePose2D& { return p.d.pose; }, driftStd_,
+            rng);
     index_.clear();
     names_.clear();
     isTag_.clear();
@@ -85,7 +89,7 @@ void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     if (const auto g = motionOf(action))
         drawMotion(
             *g, m_particles, [](auto& p) -> CParticlePose2D& { return p.d.pose; }, *rng_,
-            moves_);
+            moves_, driftWalk_);
     if (!detections_ || detections_->empty()) return;
     std::vector<size_t> idx;
     for (const auto& d : *detections_) idx.push_back(indexOf(d));

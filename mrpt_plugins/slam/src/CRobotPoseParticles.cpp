@@ -25,6 +25,10 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
                                        start.y() + rng.drawGaussian1D(0, stdXY),
                                        start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
+    if (m_driftStd > 0)
+        drawDriftPrior(
+            m_particles, [](auto& p) -> CParticlePose2D& { return p.d; }, m_driftStd,
+            rng);
 }
 
 mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
@@ -88,7 +92,10 @@ std::optional<TPoseMoments> CRobotPoseParticles::posteriorMoments() const {
 void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
     double best = -1e300;
     for (const auto& q : m_particles) best = std::max(best, q.log_w);
+    // A resetting moves the pose; the particle keeps its drift hypothesis.
+    const double drift = m_particles.at(i).d.drift;
     m_particles.at(i).d = p;
+    m_particles.at(i).d.drift = drift;
     m_particles.at(i).log_w = best;
     m_postValid = false;
     m_ess = -1;
@@ -167,7 +174,7 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     if (const auto g = motionOf(action))
         drawMotion(
             *g, m_particles, [](auto& p) -> CParticlePose2D& { return p.d; }, *m_rng,
-            m_moves);
+            m_moves, m_driftWalk);
     m_ess = -1;
     m_stepLogLik.clear();
     m_priorValid = m_postValid = false;

@@ -13,7 +13,8 @@ void TMotionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     const rfir::ini::CIniSection sec(
         c, s,
         {"a1", "a2", "a3", "a4", "min_std_xy", "min_std_phi", "max_speed",
-         "max_turn_rate", "interpolate_polls", "odometry_latency"});
+         "max_turn_rate", "interpolate_polls", "odometry_latency", "heading_drift_std",
+         "heading_drift_walk"});
     // Upper bounds: 1 m of xy std per metre (or radian) and pi of heading std
     // are already a robot that has no odometry at all.
     a1 = sec.getDouble("a1", a1, R::closed(0, 1));
@@ -29,6 +30,11 @@ void TMotionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     // A latency of seconds would be a clock error, not a lag.
     odometry_latency =
         sec.getDouble("odometry_latency", odometry_latency, R::closed(-1, 1));
+    // 0.1 rad per metre is a robot whose odometry has no heading at all.
+    heading_drift_std =
+        sec.getDouble("heading_drift_std", heading_drift_std, R::closed(0, 0.1));
+    heading_drift_walk =
+        sec.getDouble("heading_drift_walk", heading_drift_walk, R::closed(0, 0.1));
     if (odometry_latency != 0 && !interpolate_polls)
         sec.fail("odometry_latency",
                  "a latency moves the polls between odometry records: it needs "
@@ -50,6 +56,10 @@ void TMotionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
             "polls at the odometry interpolated to their time");
     c.write(s, "odometry_latency", odometry_latency, -1, -1,
             "odometry record stamped t = pose at t - latency [s]");
+    c.write(s, "heading_drift_std", heading_drift_std, -1, -1,
+            "prior std of the per-particle heading drift [rad/m], 0 off");
+    c.write(s, "heading_drift_walk", heading_drift_walk, -1, -1,
+            "its random walk [rad/m per sqrt(m)], 0 off");
 }
 
 mrpt::obs::CActionRobotMovement2D::TMotionModelOptions TMotionOptions::toMRPT() const {

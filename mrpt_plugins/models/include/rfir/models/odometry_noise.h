@@ -83,10 +83,12 @@ class OdometryGaussian {
         propagate(rng, x, y, phi, std::cos(phi), std::sin(phi));
     }
     /** The same, given c, s = cos(phi), sin(phi). */
-    void propagate(TRandom& rng, double& x, double& y, double& phi, double c,
-                   double s) const {
-        compose(rng, x, y, phi, c, s);
+    void propagate(TRandom& rng, double& x, double& y, double& phi, double c, double s,
+                   double extraTurn = 0) const {
+        compose(rng, x, y, phi, c, s, extraTurn);
     }
+    /** Length of the mean increment's translation. */
+    double distance() const { return std::hypot(m_mean[0], m_mean[1]); }
 
     /** The same, also carrying the heading's cos and sin: c, s are
      * cos(phi), sin(phi) on entry and those of the new heading on return,
@@ -96,8 +98,8 @@ class OdometryGaussian {
      * few ulp of std::cos / std::sin per step; a caller keeping c, s over
      * many steps recomputes them now and then (CParticlePose2D). */
     void propagateCarryingHeading(TRandom& rng, double& x, double& y, double& phi,
-                                  double& c, double& s) const {
-        const double iphi = compose(rng, x, y, phi, c, s);
+                                  double& c, double& s, double extraTurn = 0) const {
+        const double iphi = compose(rng, x, y, phi, c, s, extraTurn);
         double cn, sn;  // of the turn iphi
         if (smallAngleCosSin(iphi - m_mean[2], cn, sn)) {
             const double ct = m_cosMean * cn - m_sinMean * sn;
@@ -117,10 +119,11 @@ class OdometryGaussian {
   private:
     /** pose (+) one draw, heading wrapped to (-pi, pi] as CPose2D's
      * composition does; c, s of the heading before. Returns the drawn turn. */
-    double compose(TRandom& rng, double& x, double& y, double& phi, double c,
-                   double s) const {
+    double compose(TRandom& rng, double& x, double& y, double& phi, double c, double s,
+                   double extraTurn) const {
         double ix, iy, iphi;
         draw(rng, ix, iy, iphi);
+        iphi += extraTurn;
         x += c * ix - s * iy;
         y += s * ix + c * iy;
         phi += iphi;

@@ -50,6 +50,12 @@ class CFastSLAMParticles
      * `rng` (the engine's, outliving this set) draws their motion too. */
     void reset(const mrpt::poses::CPose2D& start, size_t M, double stdXY, double stdPhi,
                rfir::models::TRandom& rng);
+    /** The per-particle heading drift (TMotionOptions::heading_drift_std,
+     * heading_drift_walk), used from the next reset on. */
+    void setHeadingDrift(double std, double walk) {
+        driftStd_ = std;
+        driftWalk_ = walk;
+    }
     /** The detections the next CParticleFilter::executeOn step weighs with. */
     void setDetections(const std::vector<TDetection>* d) { detections_ = d; }
 
@@ -78,6 +84,7 @@ class CFastSLAMParticles
     CGaussianLandmarkModel model_;
     rfir::models::TRandom* rng_ = nullptr;  //!< the engine's generator
     unsigned moves_ = 0;                    //!< motion draws (drawMotion)
+    double driftStd_ = 0, driftWalk_ = 0;   //!< setHeadingDrift
     const std::vector<TDetection>* detections_ = nullptr;
     std::map<std::string, size_t> index_;
     std::vector<std::string> names_;

@@ -35,19 +35,21 @@ class CParticlePose2D : public mrpt::poses::CPose2D {
      * heading's cos and sin are recomputed from it (by the next phi_cos)
      * instead of carried; the particle sets do so every few steps, so that
      * the rounding of the carried values (a few ulp per step) cannot build
-     * up. The draws are the same either way. */
+     * up. The draws are the same either way. `dist`: the increment's mean
+     * length, over which the particle's drift turns it. */
     void move(const rfir::models::OdometryGaussian& g, rfir::models::TRandom& rng,
-              bool exact) {
+              bool exact, double dist = 0) {
+        const double extra = drift * dist;
         double x = m_coords[0], y = m_coords[1], phi = m_phi;
         double c = phi_cos(), s = phi_sin();
         if (exact) {
-            g.propagate(rng, x, y, phi, c, s);
+            g.propagate(rng, x, y, phi, c, s, extra);
             m_coords[0] = x;
             m_coords[1] = y;
             this->phi(phi);  // resets the cache
             return;
         }
-        g.propagateCarryingHeading(rng, x, y, phi, c, s);
+        g.propagateCarryingHeading(rng, x, y, phi, c, s, extra);
         m_coords[0] = x;
         m_coords[1] = y;
         m_phi = phi;
@@ -55,5 +57,9 @@ class CParticlePose2D : public mrpt::poses::CPose2D {
         m_sinphi = s;
         m_cossin_uptodate = true;
     }
+    /** This particle's hypothesis of the odometry's heading drift [rad per
+     * metre travelled] (TMotionOptions::heading_drift_std): its own
+     * calibration, weighed and resampled with its pose; 0 unless enabled. */
+    double drift = 0;
 };
 }  // namespace rfir::slam

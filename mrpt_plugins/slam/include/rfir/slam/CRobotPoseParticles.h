@@ -47,6 +47,12 @@ class CRobotPoseParticles
         virtual double logLikelihood(size_t i, const CParticlePose2D& pose) const = 0;
     };
     void setStepModel(IStepModel* m) { m_model = m; }
+    /** The per-particle heading drift (TMotionOptions::heading_drift_std,
+     * heading_drift_walk), used from the next reset on. */
+    void setHeadingDrift(double std, double walk) {
+        m_driftStd = std;
+        m_driftWalk = walk;
+    }
 
     mrpt::poses::CPose2D meanPose() const;
     /** Weighted mean pose and covariance of the particles (one pass). */
@@ -93,6 +99,7 @@ class CRobotPoseParticles
     rfir::models::TRandom* m_rng = nullptr;  //!< the engine's generator
     IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
     unsigned m_moves = 0;                    //!< motion draws (drawMotion)
+    double m_driftStd = 0, m_driftWalk = 0;  //!< setHeadingDrift
     double m_ess = -1;                 //!< ESS computed by normalizeWeights; < 0: stale
     std::vector<double> m_stepLogLik;  //!< this step's weighing terms
     /** The last normalizeWeights' log-weights and their exp, which meanPose

@@ -12,6 +12,7 @@
 #include <rfir/models/odometry_noise.h>
 #include <rfir/slam/CParticlePose2D.h>
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -36,6 +37,12 @@ struct TMotionOptions : public mrpt::config::CLoadableOptions {
     /** s: an odometry record stamped t is the pose at t - odometry_latency
      * (only with interpolate_polls). */
     double odometry_latency = 0;
+    /** The odometry's systematic heading drift (a wheel-diameter mismatch)
+     * as part of each robot particle's state: rad per metre travelled, drawn
+     * per particle from N(0, heading_drift_std^2) at the start and walking
+     * by N(0, heading_drift_walk^2 d) over d metres. 0, 0: no drift state. */
+    double heading_drift_std = 0;   //!< rad/m
+    double heading_drift_walk = 0;  //!< rad/m per sqrt(m)
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;
@@ -109,9 +116,28 @@ std::optional<rfir::models::OdometryGaussian> motionOf(
 constexpr unsigned kExactHeadingEvery = 64;
 template <class Particles, class PoseOf>
 void drawMotion(const rfir::models::OdometryGaussian& g, Particles& particles,
-                PoseOf&& poseOf, rfir::models::TRandom& rng, unsigned& moves) {
+                PoseOf&& poseOf, rfir::models::TRandom& rng, unsigned& moves,
+                double driftWalk = 0) {
     const bool exact = ++moves % kExactHeadingEvery == 0;
-    for (auto& p : particles) poseOf(p).move(g, rng, exact);
+    const double d = g.distance();
+    if (!(driftWalk > 0)) {
+        for (auto& p : particles) poseOf(p).move(g, rng, exact, d);
+        return;
+    }
+    const double sd = driftWalk * std::sqrt(d);
+    for (auto& p : particles) {
+        auto& q = poseOf(p);
+        q.drift += rng.drawGaussian1D(0, sd);
+        q.move(g, rng, exact, d);
+    }
+}
+
+/** Each particle's heading drift drawn from N(0, std^2) (none if std is 0):
+ * the prior of TMotionOptions::heading_drift_std. */
+template <class Particles, class PoseOf>
+void drawDriftPrior(Particles& particles, PoseOf&& poseOf, double std,
+                    rfir::models::TRandom& rng) {
+    for (auto& p : particles) poseOf(p).drift = std > 0 ? rng.drawGaussian1D(0, std) : 0;
 }
 
 }  // namespace rfir::slam

@@ -103,7 +103,10 @@ print("| --- | --- | --- | --- | --- | --- | --- |")
 for ini in kidnap:
     c = configparser.ConfigParser(inline_comment_prefixes=None)
     c.read(f"config_ini/{ini}.ini")
-    T = float(c["kidnap"]["time"]); down = T + float(c["kidnap"]["carry_time"])
+    # [kidnap] time counts from the run's start, the clock from start_time
+    # (1 s unless the INI says otherwise: docs/simulator.md).
+    t0 = float(c["simulation"].get("start_time", "1")) if "simulation" in c else 1.0
+    T = t0 + float(c["kidnap"]["time"]); down = T + float(c["kidnap"]["carry_time"])
     for m in methods:
         for s in range(1, seeds + 1):
             d, dr = f"{out}/{ini}/s{s}", f"{out}/{ini}_ref/s{s}"

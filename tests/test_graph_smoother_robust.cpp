@@ -57,7 +57,7 @@ TScore filterAndSmooth(const rfir::sim::TSimConfig& c, const std::string& name,
                                   rfir::slam::smootherParams(cfg));
     const auto se = rfir::eval::computeRobotErrors(rfir::slam::stampedPath(s.res.run),
                                                    sim.groundTruth);
-    const double t0 = c.kidnap.enabled ? c.kidnap.time + c.kidnap.carryTime : 0;
+    const double t0 = c.kidnap.enabled ? c.kidnapDownClock() : 0;
     s.filter = f.robot, s.smoothed = se.stats.mean_dist;
     s.filterAfter = meanAfter(f.robotErrors, t0), s.smoothedAfter = meanAfter(se, t0);
     s.filterTags = f.tags;

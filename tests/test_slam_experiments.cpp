@@ -108,9 +108,7 @@ TEST(SlamExperiments, DISABLED_Compare) {
             tags[m].push_back(r.tags);
             times[m].push_back(r.run.meanStepTime);
             std::vector<double> e;
-            const double t0 = simCfg.kidnap.enabled
-                                  ? simCfg.kidnap.time + simCfg.kidnap.carryTime + 15
-                                  : 0;
+            const double t0 = simCfg.kidnap.enabled ? simCfg.kidnapDownClock() + 15 : 0;
             for (const auto& pe : r.robotErrors.perPose)
                 if (pe.t > t0) e.push_back(pe.dist);
             late[m].push_back(mean(e));

@@ -45,7 +45,7 @@ TMapEntry::Kind mapKind(const rfir::sim::TSimOutput& sim) {
 /** Error before the kidnapping, after it, and the time to get back to the
  * accuracy of before (below twice the mean error before the kidnapping). */
 void kidnapMetrics(const rfir::sim::TSimConfig& cfg, TRunResult& r) {
-    const double t0 = cfg.kidnap.time, tDown = t0 + cfg.kidnap.carryTime;
+    const double t0 = cfg.kidnapLiftClock(), tDown = cfg.kidnapDownClock();
     const auto& pp = r.eval.robot->perPose;
     double sb = 0, sa = 0;
     size_t nb = 0, na = 0;

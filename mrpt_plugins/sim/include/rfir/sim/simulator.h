@@ -218,6 +218,11 @@ struct TSimConfig : public mrpt::config::CLoadableOptions {
 
     TTrajectoryConfig trajectory;
     TKidnapConfig kidnap;
+    /** The clock (s, as the steps' timestamps) at which the robot is lifted
+     * and put down: kidnap.time counts from the start, the clock from
+     * startTime. */
+    double kidnapLiftClock() const { return startTime + kidnap.time; }
+    double kidnapDownClock() const { return kidnapLiftClock() + kidnap.carryTime; }
     TOdometryNoise odometry;
     TRFIDConfig rfid;
     TIRConfig ir;

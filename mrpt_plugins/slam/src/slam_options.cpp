@@ -82,7 +82,7 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         c, s,
         {"method", "robot_particles", "resampling", "resample_ess", "start_std_xy",
          "start_std_phi", "tag_update_pose", "map_correction", "map_correction_min_std",
-         "map_correction_max_tags"});
+         "map_correction_max_tags", "read_confirm_window"});
     method = TMethod(sec.getEnum("method", kMethodNames, size_t(method)));
     robot_particles =
         unsigned(sec.getInt("robot_particles", int64_t(robot_particles), 1, 1000000));
@@ -105,6 +105,9 @@ void TSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         sec.getDouble("map_correction_min_std", map_correction_min_std, R::aboveZero(1));
     map_correction_max_tags = unsigned(sec.getInt(
         "map_correction_max_tags", int64_t(map_correction_max_tags), 1, 10000000));
+    // A minute between two reads of one tag is a revisit, not a confirmation.
+    read_confirm_window =
+        sec.getDouble("read_confirm_window", read_confirm_window, R::closed(0, 60));
 }
 
 void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -125,6 +128,9 @@ void TSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
             "[m] a tag's share of the robot error below which it stops following");
     c.write(s, "map_correction_max_tags", int(map_correction_max_tags), -1, -1,
             "at most this many tags follow the robot (the oldest leave first)");
+    c.write(s, "read_confirm_window", read_confirm_window, -1, -1,
+            "pf/ps [s]: a read weighs the robot only after a read of its tag this "
+            "recently (0: every read)");
 }
 
 PF::TParticleFilterOptions TSlamOptions::pfOptions() const {

@@ -10,9 +10,11 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <rfir/models/random.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <unordered_map>
 
 namespace rfir::slam {
 using rfir::maps::CRFIDTagParticleMap;
@@ -65,6 +67,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                   cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);
         resetTimes_.clear();
+        lastSeen_.clear();
         slip_.reset();
         corr_ = CMapCorrection(cfg_.slam.map_correction_min_std,
                                cfg_.slam.map_correction_max_tags);
@@ -161,7 +164,10 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     rfir::models::TRandom rng_;
     std::vector<mrpt::obs::CObservation::Ptr> obs_;
     std::vector<TDetection> dets_;  //!< this step's detections
-    bool literal_ = false;          //!< tags updated before the weighing
+    /** read_confirm_window: each tag's last read time (s). */
+    std::unordered_map<std::string, double> lastSeen_;
+    void confirmReads(double window);
+    bool literal_ = false;  //!< tags updated before the weighing
     bool mapThisStep_ = true;
     std::vector<CRFIDTagParticleMap::TRobotReads> reads_;
     /** This step's weighing terms without the outlier mixture, per particle
@@ -197,6 +203,25 @@ void CTagMapEngine::resolveReads() {
     for (size_t j = 0; j < obs_.size(); j++)
         if (map_.genericMapParams.enableObservationLikelihood)
             map_.resolveRobotReads(*obs_[j], reads_[j]);
+    if (cfg_.slam.read_confirm_window > 0) confirmReads(cfg_.slam.read_confirm_window);
+}
+
+void CTagMapEngine::confirmReads(double window) {
+    // A ghost read is one event; a real tag stays in its reader over a few
+    // polls. Unconfirmed reads leave the weighing (and the kidnap check,
+    // which reads the same reads_); every read of this step confirms the next.
+    const auto unconfirmed = [&](const CRFIDTagParticleMap::TRobotReads::TRead& rd) {
+        if (!rd.id) return false;
+        const auto it = lastSeen_.find(*rd.id);
+        return it == lastSeen_.end() || !(t_ - it->second <= window);
+    };
+    for (auto& r : reads_) {
+        if (r.rangeBearing) continue;
+        r.reads.erase(std::remove_if(r.reads.begin(), r.reads.end(), unconfirmed),
+                      r.reads.end());
+    }
+    for (const auto& d : dets_)
+        if (d.kind == TDetection::Kind::RFID) lastSeen_[d.id] = t_;
 }
 
 TStepEvidence CTagMapEngine::stepEvidence() const {

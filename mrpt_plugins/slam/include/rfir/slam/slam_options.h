@@ -46,6 +46,10 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
     /** At most this many tags follow the robot (the oldest leave first): a
      * correction's cost stays bounded whatever the map's size. */
     unsigned map_correction_max_tags = 1000;
+    /** PF/PS, s: a read of a tag weighs the robot only if the same tag was
+     * also read within this long before it (by any reader), so that a
+     * single ghost read cannot pull a wide robot cloud (0: every read). */
+    double read_confirm_window = 0;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;

@@ -31,7 +31,13 @@ OdometryGaussian exact(double dx, double dy, double dphi) {
     const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     return OdometryGaussian::fromCovariance(dx, dy, dphi, zero);
 }
-auto poseOf = [](CParticlePose2D& p) -> CParticlePose2D& { return p; };
+/** A particle with its drift, as the filters keep them. */
+struct TParticle {
+    CParticlePose2D pose;
+    double drift = 0;
+};
+auto poseOf = [](TParticle& p) -> CParticlePose2D& { return p.pose; };
+auto driftOf = [](TParticle& p, size_t) -> double& { return p.drift; };
 
 /** config_ini/slam_<method>_long.ini. */
 rfir::slam::TSlamConfig longConfig(const std::string& method) {
@@ -52,33 +58,46 @@ rfir::sim::TSimConfig stockSimIni(const std::string& name) {
 // b (b * 1 m), one without drift is not turned, whether the heading's cos and
 // sin are carried or recomputed.
 TEST(HeadingDrift, EachParticleTurnsByItsDriftPerMetre) {
-    std::vector<CParticlePose2D> ps(2);
+    std::vector<TParticle> ps(2);
     ps[0].drift = 0.01;
     ps[1].drift = 0;
     TRandom rng(1);
     unsigned moves = 0;
     for (int k = 0; k < 10; k++)
-        rfir::slam::drawMotion(exact(0.1, 0, 0), ps, poseOf, rng, moves);
-    EXPECT_NEAR(ps[0].phi(), 0.01, 1e-12);
-    EXPECT_NEAR(ps[0].phi_cos(), std::cos(0.01), 1e-12);
-    EXPECT_EQ(ps[1].phi(), 0.0);
-    EXPECT_NEAR(ps[1].x(), 1.0, 1e-12);
+        rfir::slam::drawMotion(exact(0.1, 0, 0), ps, poseOf, driftOf, 0, rng, moves);
+    EXPECT_NEAR(ps[0].pose.phi(), 0.01, 1e-12);
+    EXPECT_NEAR(ps[0].pose.phi_cos(), std::cos(0.01), 1e-12);
+    EXPECT_EQ(ps[1].pose.phi(), 0.0);
+    EXPECT_NEAR(ps[1].pose.x(), 1.0, 1e-12);
     // The drifting particle's arc: each step moves along the heading before
     // it, so it ends left of the straight one (y > 0), below b / 2 m.
-    EXPECT_GT(ps[0].y(), 0.0);
-    EXPECT_LT(ps[0].y(), 0.005);
+    EXPECT_GT(ps[0].pose.y(), 0.0);
+    EXPECT_LT(ps[0].pose.y(), 0.005);
     // An in-place turn travels no distance: the drift adds nothing.
-    const double before = ps[0].phi();
-    rfir::slam::drawMotion(exact(0, 0, 0.2), ps, poseOf, rng, moves);
-    EXPECT_NEAR(ps[0].phi(), before + 0.2, 1e-12);
+    const double before = ps[0].pose.phi();
+    rfir::slam::drawMotion(exact(0, 0, 0.2), ps, poseOf, driftOf, 0, rng, moves);
+    EXPECT_NEAR(ps[0].pose.phi(), before + 0.2, 1e-12);
+    // Without a drift state the same draws give the drift-free particle's
+    // pose bit for bit.
+    std::vector<TParticle> plain(1), zero(1);
+    TRandom r1(5), r2(5);
+    unsigned m1 = 0, m2 = 0;
+    const auto g = OdometryGaussian::fromOdometry(0.02, 0.001, 0.01,
+                                                  {0.02, 0.001, 0.02, 0.05, 5e-4, 5e-4});
+    for (int k = 0; k < 100; k++) {
+        rfir::slam::drawMotion(g, plain, poseOf, r1, m1);
+        rfir::slam::drawMotion(g, zero, poseOf, driftOf, 0, r2, m2);
+    }
+    EXPECT_EQ(plain[0].pose.x(), zero[0].pose.x());
+    EXPECT_EQ(plain[0].pose.phi(), zero[0].pose.phi());
 }
 
 // The prior draws N(0, std^2) per particle; the walk adds N(0, walk^2 d) over
 // d metres (2000 particles, 100 m: std within 10 % of the model's).
 TEST(HeadingDrift, PriorAndWalkHaveTheirStds) {
-    std::vector<CParticlePose2D> ps(2000);
+    std::vector<TParticle> ps(2000);
     TRandom rng(7);
-    rfir::slam::drawDriftPrior(ps, poseOf, 0.005, rng);
+    rfir::slam::drawDriftPrior(ps, driftOf, 0.005, rng);
     const auto stdOf = [&] {
         double s = 0, s2 = 0;
         for (const auto& p : ps) {
@@ -89,11 +108,11 @@ TEST(HeadingDrift, PriorAndWalkHaveTheirStds) {
         return std::sqrt(s2 / n - (s / n) * (s / n));
     };
     EXPECT_NEAR(stdOf(), 0.005, 0.0005);
-    rfir::slam::drawDriftPrior(ps, poseOf, 0, rng);
+    rfir::slam::drawDriftPrior(ps, driftOf, 0, rng);
     EXPECT_EQ(stdOf(), 0.0);
     unsigned moves = 0;
     for (int k = 0; k < 1000; k++)
-        rfir::slam::drawMotion(exact(0.1, 0, 0), ps, poseOf, rng, moves, 0.0003);
+        rfir::slam::drawMotion(exact(0.1, 0, 0), ps, poseOf, driftOf, 0.0003, rng, moves);
     EXPECT_NEAR(stdOf(), 0.0003 * std::sqrt(100.0), 0.0003);
 }
 

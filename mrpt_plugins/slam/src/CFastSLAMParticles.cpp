@@ -45,7 +45,7 @@ void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, doub
     }
     if (driftStd_ > 0)
         drawDriftPrior(
-            m_particles, [](auto& p) -> CParticlePose2D& { return p.d.pose; }, driftStd_,
+            m_particles, [](auto& p, size_t) -> double& { return p.d.drift; }, driftStd_,
             rng);
     index_.clear();
     names_.clear();
@@ -86,10 +86,16 @@ double CFastSLAMParticles::updateParticle(TFastSLAMParticle& p,
 void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame*,
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
-    if (const auto g = motionOf(action))
-        drawMotion(
-            *g, m_particles, [](auto& p) -> CParticlePose2D& { return p.d.pose; }, *rng_,
-            moves_, driftWalk_);
+    const auto poseOf = [](auto& p) -> CParticlePose2D& { return p.d.pose; };
+    if (const auto g = motionOf(action)) {
+        if (driftStd_ > 0 || driftWalk_ > 0)
+            drawMotion(
+                *g, m_particles, poseOf,
+                [](auto& p, size_t) -> double& { return p.d.drift; }, driftWalk_, *rng_,
+                moves_);
+        else
+            drawMotion(*g, m_particles, poseOf, *rng_, moves_);
+    }
     if (!detections_ || detections_->empty()) return;
     std::vector<size_t> idx;
     for (const auto& d : *detections_) idx.push_back(indexOf(d));

@@ -25,10 +25,13 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
                                        start.y() + rng.drawGaussian1D(0, stdXY),
                                        start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
-    if (m_driftStd > 0)
+    m_drift.clear();
+    if (m_driftStd > 0 || m_driftWalk > 0) {
+        m_drift.assign(M, 0.0);
         drawDriftPrior(
-            m_particles, [](auto& p) -> CParticlePose2D& { return p.d; }, m_driftStd,
-            rng);
+            m_particles, [&](auto&, size_t i) -> double& { return m_drift[i]; },
+            m_driftStd, rng);
+    }
 }
 
 mrpt::poses::CPose2D CRobotPoseParticles::meanPose() const {
@@ -93,9 +96,7 @@ void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
     double best = -1e300;
     for (const auto& q : m_particles) best = std::max(best, q.log_w);
     // A resetting moves the pose; the particle keeps its drift hypothesis.
-    const double drift = m_particles.at(i).d.drift;
     m_particles.at(i).d = p;
-    m_particles.at(i).d.drift = drift;
     m_particles.at(i).log_w = best;
     m_postValid = false;
     m_ess = -1;
@@ -162,6 +163,11 @@ void CRobotPoseParticles::performSubstitution(const std::vector<size_t>& indx) {
     CParticleList parts(sorted.size());
     for (size_t i = 0; i < sorted.size(); i++) parts[i] = m_particles[sorted[i]];
     m_particles = std::move(parts);
+    if (!m_drift.empty()) {
+        std::vector<double> drift(sorted.size());
+        for (size_t i = 0; i < sorted.size(); i++) drift[i] = m_drift[sorted[i]];
+        m_drift = std::move(drift);
+    }
     m_ess = -1;
     m_stepLogLik.clear();  // no longer this set's
 }
@@ -171,10 +177,16 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     // Motion model (SPEC section 3): one draw of the odometry increment's
     // Gaussian per particle.
-    if (const auto g = motionOf(action))
-        drawMotion(
-            *g, m_particles, [](auto& p) -> CParticlePose2D& { return p.d; }, *m_rng,
-            m_moves, m_driftWalk);
+    const auto poseOf = [](auto& p) -> CParticlePose2D& { return p.d; };
+    if (const auto g = motionOf(action)) {
+        if (m_drift.empty())
+            drawMotion(*g, m_particles, poseOf, *m_rng, m_moves);
+        else
+            drawMotion(
+                *g, m_particles, poseOf,
+                [&](auto&, size_t i) -> double& { return m_drift[i]; }, m_driftWalk,
+                *m_rng, m_moves);
+    }
     m_ess = -1;
     m_stepLogLik.clear();
     m_priorValid = m_postValid = false;

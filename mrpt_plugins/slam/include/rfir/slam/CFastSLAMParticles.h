@@ -24,6 +24,7 @@ namespace rfir::slam {
 struct TFastSLAMParticle {
     CParticlePose2D pose;
     CPersistentVector<TLandmarkEKF> landmarks;  //!< by CFastSLAMParticles index
+    double drift = 0;  //!< heading drift, rad/m (TMotionOptions::heading_drift_std)
 };
 
 /** INI section [fastslam]. */

@@ -35,11 +35,10 @@ class CParticlePose2D : public mrpt::poses::CPose2D {
      * heading's cos and sin are recomputed from it (by the next phi_cos)
      * instead of carried; the particle sets do so every few steps, so that
      * the rounding of the carried values (a few ulp per step) cannot build
-     * up. The draws are the same either way. `dist`: the increment's mean
-     * length, over which the particle's drift turns it. */
+     * up. The draws are the same either way. `extra`: a turn added to the
+     * draw's (a particle's heading drift over the increment). */
     void move(const rfir::models::OdometryGaussian& g, rfir::models::TRandom& rng,
-              bool exact, double dist = 0) {
-        const double extra = drift * dist;
+              bool exact, double extra = 0) {
         double x = m_coords[0], y = m_coords[1], phi = m_phi;
         double c = phi_cos(), s = phi_sin();
         if (exact) {
@@ -57,9 +56,5 @@ class CParticlePose2D : public mrpt::poses::CPose2D {
         m_sinphi = s;
         m_cossin_uptodate = true;
     }
-    /** This particle's hypothesis of the odometry's heading drift [rad per
-     * metre travelled] (TMotionOptions::heading_drift_std): its own
-     * calibration, weighed and resampled with its pose; 0 unless enabled. */
-    double drift = 0;
 };
 }  // namespace rfir::slam

@@ -48,11 +48,13 @@ class CRobotPoseParticles
     };
     void setStepModel(IStepModel* m) { m_model = m; }
     /** The per-particle heading drift (TMotionOptions::heading_drift_std,
-     * heading_drift_walk), used from the next reset on. */
+     * heading_drift_walk), used from the next reset on (drawMotion). */
     void setHeadingDrift(double std, double walk) {
         m_driftStd = std;
         m_driftWalk = walk;
     }
+    /** Particle i's heading drift (rad/m); empty without a drift state. */
+    const std::vector<double>& headingDrifts() const { return m_drift; }
 
     mrpt::poses::CPose2D meanPose() const;
     /** Weighted mean pose and covariance of the particles (one pass). */
@@ -100,6 +102,8 @@ class CRobotPoseParticles
     IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
     unsigned m_moves = 0;                    //!< motion draws (drawMotion)
     double m_driftStd = 0, m_driftWalk = 0;  //!< setHeadingDrift
+    /** Particle i's heading drift (rad/m), empty without a drift state. */
+    std::vector<double> m_drift;
     double m_ess = -1;                 //!< ESS computed by normalizeWeights; < 0: stale
     std::vector<double> m_stepLogLik;  //!< this step's weighing terms
     /** The last normalizeWeights' log-weights and their exp, which meanPose

@@ -53,8 +53,6 @@ class CRobotPoseParticles
         m_driftStd = std;
         m_driftWalk = walk;
     }
-    /** Particle i's heading drift (rad/m); empty without a drift state. */
-    const std::vector<double>& headingDrifts() const { return m_drift; }
 
     mrpt::poses::CPose2D meanPose() const;
     /** Weighted mean pose and covariance of the particles (one pass). */

@@ -43,9 +43,9 @@ void CFastSLAMParticles::reset(const mrpt::poses::CPose2D& start, size_t M, doub
                                             start.y() + rng.drawGaussian1D(0, stdXY),
                                             start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
-    if (driftStd_ > 0)
+    if (drift_.std > 0)
         drawDriftPrior(
-            m_particles, [](auto& p, size_t) -> double& { return p.d.drift; }, driftStd_,
+            m_particles, [](auto& p, size_t) -> double& { return p.d.drift; }, drift_.std,
             rng);
     index_.clear();
     names_.clear();
@@ -88,10 +88,10 @@ void CFastSLAMParticles::prediction_and_update_pfStandardProposal(
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions&) {
     const auto poseOf = [](auto& p) -> CParticlePose2D& { return p.d.pose; };
     if (const auto g = motionOf(action)) {
-        if (driftStd_ > 0 || driftWalk_ > 0)
+        if (drift_.on())
             drawMotion(
                 *g, m_particles, poseOf,
-                [](auto& p, size_t) -> double& { return p.d.drift; }, driftWalk_, *rng_,
+                [](auto& p, size_t) -> double& { return p.d.drift; }, drift_.walk, *rng_,
                 moves_);
         else
             drawMotion(*g, m_particles, poseOf, *rng_, moves_);

@@ -26,11 +26,11 @@ void CRobotPoseParticles::reset(const mrpt::poses::CPose2D& start, size_t M, dou
                                        start.phi() + rng.drawGaussian1D(0, stdPhi));
     }
     m_drift.clear();
-    if (m_driftStd > 0 || m_driftWalk > 0) {
+    if (m_headingDrift.on()) {
         m_drift.assign(M, 0.0);
         drawDriftPrior(
             m_particles, [&](auto&, size_t i) -> double& { return m_drift[i]; },
-            m_driftStd, rng);
+            m_headingDrift.std, rng);
     }
 }
 
@@ -184,8 +184,8 @@ void CRobotPoseParticles::prediction_and_update_pfStandardProposal(
         else
             drawMotion(
                 *g, m_particles, poseOf,
-                [&](auto&, size_t i) -> double& { return m_drift[i]; }, m_driftWalk,
-                *m_rng, m_moves);
+                [&](auto&, size_t i) -> double& { return m_drift[i]; },
+                m_headingDrift.walk, *m_rng, m_moves);
     }
     m_ess = -1;
     m_stepLogLik.clear();

@@ -31,8 +31,7 @@ class CFastSLAMEngine : public CSlamEngine {
     void reset(const mrpt::poses::CPose2D& start) override {
         rng_.randomize(cfg_.seed);  // the run's one generator (--seed)
         slip_.reset();
-        pf_.setHeadingDrift(cfg_.motion.heading_drift_std,
-                            cfg_.motion.heading_drift_walk);
+        pf_.setHeadingDrift(cfg_.motion.headingDrift());
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
                   cfg_.slam.start_std_phi, rng_);
     }

@@ -61,8 +61,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         map_.likelihoodOptions = cfg_.tagmap->likelihood;
         map_.setRandomSeed(rng_.drawUniform64bit());
         map_.setLandmarkNames(hdr_.rbLandmarkNames);
-        pf_.setHeadingDrift(cfg_.motion.heading_drift_std,
-                            cfg_.motion.heading_drift_walk);
+        pf_.setHeadingDrift(cfg_.motion.headingDrift());
         pf_.reset(start, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
                   cfg_.slam.start_std_phi, rng_);
         kidnap_ = CKidnapMonitor(cfg_.kidnap);

@@ -9,6 +9,7 @@
 #include <rfir/slam/CParticlePose2D.h>
 #include <rfir/slam/detections.h>
 #include <rfir/slam/landmark_ekf.h>
+#include <rfir/slam/motion_model.h>
 #include <rfir/slam/persistent_vector.h>
 
 #include <mrpt/bayes/CParticleFilterCapable.h>
@@ -53,10 +54,7 @@ class CFastSLAMParticles
                rfir::models::TRandom& rng);
     /** The per-particle heading drift (TMotionOptions::heading_drift_std,
      * heading_drift_walk), used from the next reset on. */
-    void setHeadingDrift(double std, double walk) {
-        driftStd_ = std;
-        driftWalk_ = walk;
-    }
+    void setHeadingDrift(const THeadingDrift& d) { drift_ = d; }
     /** The detections the next CParticleFilter::executeOn step weighs with. */
     void setDetections(const std::vector<TDetection>* d) { detections_ = d; }
 
@@ -85,7 +83,7 @@ class CFastSLAMParticles
     CGaussianLandmarkModel model_;
     rfir::models::TRandom* rng_ = nullptr;  //!< the engine's generator
     unsigned moves_ = 0;                    //!< motion draws (drawMotion)
-    double driftStd_ = 0, driftWalk_ = 0;   //!< setHeadingDrift
+    THeadingDrift drift_;                   //!< setHeadingDrift
     const std::vector<TDetection>* detections_ = nullptr;
     std::map<std::string, size_t> index_;
     std::vector<std::string> names_;

@@ -13,6 +13,7 @@
 
 #include <rfir/models/random.h>
 #include <rfir/slam/CParticlePose2D.h>
+#include <rfir/slam/motion_model.h>
 #include <rfir/slam/tag_correlation.h>
 
 #include <optional>
@@ -49,10 +50,7 @@ class CRobotPoseParticles
     void setStepModel(IStepModel* m) { m_model = m; }
     /** The per-particle heading drift (TMotionOptions::heading_drift_std,
      * heading_drift_walk), used from the next reset on (drawMotion). */
-    void setHeadingDrift(double std, double walk) {
-        m_driftStd = std;
-        m_driftWalk = walk;
-    }
+    void setHeadingDrift(const THeadingDrift& d) { m_headingDrift = d; }
 
     mrpt::poses::CPose2D meanPose() const;
     /** Weighted mean pose and covariance of the particles (one pass). */
@@ -99,7 +97,7 @@ class CRobotPoseParticles
     rfir::models::TRandom* m_rng = nullptr;  //!< the engine's generator
     IStepModel* m_model = nullptr;           //!< the engine (motion only if none)
     unsigned m_moves = 0;                    //!< motion draws (drawMotion)
-    double m_driftStd = 0, m_driftWalk = 0;  //!< setHeadingDrift
+    THeadingDrift m_headingDrift;            //!< setHeadingDrift
     /** Particle i's heading drift (rad/m), empty without a drift state. */
     std::vector<double> m_drift;
     double m_ess = -1;                 //!< ESS computed by normalizeWeights; < 0: stale

@@ -17,6 +17,14 @@
 #include <vector>
 
 namespace rfir::slam {
+/** The odometry's heading drift as part of each robot particle's state
+ * (TMotionOptions::heading_drift_std, heading_drift_walk). */
+struct THeadingDrift {
+    double std = 0;   //!< prior std, rad/m
+    double walk = 0;  //!< random walk, rad/m per sqrt(m)
+    bool on() const { return std > 0 || walk > 0; }
+};
+
 /** INI section [motion]: the std of an increment (d: its length, |phi|: its
  * turn) is a1*d + a2*|phi| + min_std_xy in x and y, a3*d + a4*|phi| +
  * min_std_phi in heading (MRPT's Gaussian model). */
@@ -43,6 +51,7 @@ struct TMotionOptions : public mrpt::config::CLoadableOptions {
      * by N(0, heading_drift_walk^2 d) over d metres. 0, 0: no drift state. */
     double heading_drift_std = 0;   //!< rad/m
     double heading_drift_walk = 0;  //!< rad/m per sqrt(m)
+    THeadingDrift headingDrift() const { return {heading_drift_std, heading_drift_walk}; }
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;

@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -31,6 +32,9 @@ void CGzInputStream::open(const std::string& path) {
     close();
     path_ = path;
     total_ = pos_ = 0;
+    buf_.clear();
+    head_ = 0;
+    ended_ = cutError_ = false;
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw std::runtime_error(path + ": is a directory, not a rawlog file");
@@ -66,26 +70,49 @@ void CGzInputStream::open(const std::string& path) {
 
 size_t CGzInputStream::Read(void* buf, size_t n) {
     if (!gz_) throw std::logic_error("CGzInputStream: read before open");
-    auto f = static_cast<gzFile>(gz_);
+    // MRPT's archives read a field at a time: served from a buffer of
+    // decompressed bytes, one gzread per kChunk instead of one per field.
     size_t got = 0;
+    auto* out = static_cast<char*>(buf);
     while (got < n) {
-        const unsigned want = unsigned(std::min(n - got, kChunk));
-        const int r = gzread(f, static_cast<char*>(buf) + got, want);
-        if (r < 0)
-            throw std::runtime_error(path_ + ": damaged or truncated gzip stream (" +
-                                     gzMessage(f) + ")");
-        if (r == 0) break;
-        got += size_t(r);
+        if (head_ == buf_.size()) {
+            if (ended_ || !refill()) break;
+        }
+        const size_t k = std::min(n - got, buf_.size() - head_);
+        std::memcpy(out + got, buf_.data() + head_, k);
+        head_ += k;
+        got += k;
     }
     pos_ += got;
-    // zlib ends a stream cut before its trailer like a complete one (a short
-    // read); only the error state (Z_BUF_ERROR) tells them apart.
-    int code = Z_OK;
-    if (got < n) gzerror(f, &code);
-    if (code != Z_OK)
+    if (got < n && cutError_)
+        throw std::runtime_error(path_ + ": damaged or truncated gzip stream (" +
+                                 cutMessage_ + ")");
+    return got;
+}
+
+bool CGzInputStream::refill() {
+    auto f = static_cast<gzFile>(gz_);
+    buf_.resize(kChunk);
+    head_ = 0;
+    const int r = gzread(f, buf_.data(), unsigned(kChunk));
+    if (r < 0) {
+        buf_.clear();
         throw std::runtime_error(path_ + ": damaged or truncated gzip stream (" +
                                  gzMessage(f) + ")");
-    return got;
+    }
+    buf_.resize(size_t(r));
+    if (size_t(r) < kChunk) {
+        // zlib ends a stream cut before its trailer like a complete one (a
+        // short read); only the error state (Z_BUF_ERROR) tells them apart.
+        // The bytes before the cut are served first; the error is raised
+        // when a read needs more than they hold.
+        int code = Z_OK;
+        gzerror(f, &code);
+        ended_ = true;
+        cutError_ = code != Z_OK;
+        if (cutError_) cutMessage_ = gzMessage(f);
+    }
+    return r > 0;
 }
 
 uint64_t CGzInputStream::Seek(int64_t, mrpt::io::CStream::TSeekOrigin) {

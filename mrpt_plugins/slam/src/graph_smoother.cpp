@@ -279,6 +279,7 @@ TGraphSmootherResult smoothRunLM(const std::vector<TSlamInput>& inputs,
 TGraphSmootherParams smootherParams(const TSlamConfig& cfg) {
     TGraphSmootherParams p;
     p.motion = cfg.motion;
+    if (cfg.smoother.odometry_a3 >= 0) p.motion.a3 = cfg.smoother.odometry_a3;
     p.options = cfg.smoother;
     p.maxIterations = cfg.smoother.max_iterations;
     return p;

@@ -1,6 +1,7 @@
 #include <rfir/models/ini_reader.h>
 #include <rfir/slam/graph_smoother_options.h>
 
+#include <cmath>
 #include <vector>
 
 namespace rfir::slam {
@@ -20,8 +21,8 @@ void TGraphSmootherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBa
         c, s,
         {"solver", "odometry_loss", "odometry_loss_scale", "read_loss", "read_loss_scale",
          "read_tail_std_factor", "flat_min_half_size", "read_edge_smoothing",
-         "detection_probability", "scale_prior_std", "drift_prior_std", "kidnap_window",
-         "max_iterations"});
+         "detection_probability", "scale_prior_std", "drift_prior_std", "odometry_a3",
+         "kidnap_window", "max_iterations"});
     const std::vector<std::string> solvers = {"ceres", "lm"};
     solver = solvers[sec.getEnum("solver", solvers, indexOf(solvers, solver))];
     odometry_loss =
@@ -42,6 +43,7 @@ void TGraphSmootherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBa
                                           R::closed(0, 0.999));
     scale_prior_std = sec.getDouble("scale_prior_std", scale_prior_std, R::closed(0, 1));
     drift_prior_std = sec.getDouble("drift_prior_std", drift_prior_std, R::closed(0, 10));
+    odometry_a3 = sec.getDouble("odometry_a3", odometry_a3, R::closed(-1, M_PI));
     kidnap_window = sec.getDouble("kidnap_window", kidnap_window, R::closed(0, 1e6));
     max_iterations = int(sec.getInt("max_iterations", max_iterations, 1, 100000));
 }
@@ -65,6 +67,8 @@ void TGraphSmootherOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
             "odometry translation scale error prior std (0: not estimated)");
     c.write(s, "drift_prior_std", drift_prior_std, -1, -1,
             "odometry heading drift prior std [rad/m] (0: not estimated)");
+    c.write(s, "odometry_a3", odometry_a3, -1, -1,
+            "odometry heading std [rad] per metre (negative: [motion] a3)");
     c.write(s, "kidnap_window", kidnap_window, -1, -1,
             "s before a kidnap reset searched for the kidnapping");
     c.write(s, "max_iterations", max_iterations, -1, -1, "solver iterations");

@@ -202,7 +202,12 @@ void CTagMapEngine::resolveReads() {
     for (size_t j = 0; j < obs_.size(); j++)
         if (map_.genericMapParams.enableObservationLikelihood)
             map_.resolveRobotReads(*obs_[j], reads_[j]);
-    if (cfg_.slam.read_confirm_window > 0) confirmReads(cfg_.slam.read_confirm_window);
+    // The revisit policy weighs only a visit's first read, which is by
+    // definition unconfirmed: the confirmation would leave it nothing.
+    const bool firstReadOnly =
+        map_.likelihoodOptions.robotUpdate == rfir::maps::TRobotUpdatePolicy::Revisit;
+    if (cfg_.slam.read_confirm_window > 0 && !firstReadOnly)
+        confirmReads(cfg_.slam.read_confirm_window);
 }
 
 void CTagMapEngine::confirmReads(double window) {

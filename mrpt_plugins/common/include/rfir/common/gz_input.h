@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rfir::common {
 class CGzInputStream : public mrpt::io::CStream, public rfir::obs::IBytesLeft {
@@ -36,7 +37,14 @@ class CGzInputStream : public mrpt::io::CStream, public rfir::obs::IBytesLeft {
 
   private:
     void close();
+    /** The next chunk of decompressed bytes into buf_; false at the end. */
+    bool refill();
     std::string path_;
+    std::vector<char> buf_;  //!< decompressed bytes, served from head_
+    size_t head_ = 0;
+    bool ended_ = false;     //!< the stream gave its last bytes
+    bool cutError_ = false;  //!< ...and was cut or damaged there
+    std::string cutMessage_;
     void* gz_ = nullptr;  //!< gzFile; void* keeps zlib.h out of the header
     uint64_t total_ = 0, pos_ = 0;
 };

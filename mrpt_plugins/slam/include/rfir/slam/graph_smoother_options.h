@@ -35,6 +35,11 @@ struct TGraphSmootherOptions : public mrpt::config::CLoadableOptions {
      * 60 mm, +1 to +10 % with flat ones at 300 mm; docs/slam.md). */
     double scale_prior_std = 0;
     double drift_prior_std = 0.02;  //!< rad/m
+    /** Heading std per metre of the odometry factors (a3 of MRPT's model;
+     * negative: [motion] a3). The filters' a3 may be wider, to keep a
+     * drifting odometry inside the particle cloud between revisits; the
+     * smoother estimates the drift itself (drift_prior_std). */
+    double odometry_a3 = -1;
     /** s before a filter's kidnap reset searched for the kidnapping. */
     double kidnap_window = 8.0;
     int max_iterations = 50;

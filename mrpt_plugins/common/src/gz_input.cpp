@@ -28,7 +28,7 @@ void CGzInputStream::close() {
     gz_ = nullptr;
 }
 
-void CGzInputStream::open(const std::string& path) {
+void CGzInputStream::open(const std::string& path, uint64_t keepInMemory) {
     close();
     path_ = path;
     total_ = pos_ = 0;
@@ -56,16 +56,42 @@ void CGzInputStream::open(const std::string& path) {
             close();
             throw std::runtime_error(path + ": cannot read its size");
         }
-    } else if (first == 1) {
-        std::string buf(kChunk, '\0');
-        total_ = 1;
-        for (int r; (r = gzread(f, buf.data(), kChunk)) > 0;) total_ += uint64_t(r);
+    } else if (first == 1 && sizeAndKeep(probe, keepInMemory)) {
+        return;  // the whole stream is in buf_: no second pass
     }
     gzclearerr(f);
     if (gzrewind(f) != 0) {
         close();
         throw std::runtime_error(path + ": cannot rewind after sizing");
     }
+}
+
+bool CGzInputStream::sizeAndKeep(char first, uint64_t keepInMemory) {
+    // The sizing pass keeps what it decompresses while that stays small:
+    // the reads are then served from memory, with one decompression instead
+    // of two. A damaged or cut stream keeps its good bytes and the error,
+    // raised when a read goes past them (as Read does when streaming).
+    auto f = static_cast<gzFile>(gz_);
+    buf_.assign(1, first);
+    total_ = 1;
+    bool keep = true;
+    std::string chunk(kChunk, '\0');
+    for (int r; (r = gzread(f, chunk.data(), kChunk)) > 0;) {
+        total_ += uint64_t(r);
+        keep = keep && total_ <= keepInMemory;
+        if (keep)
+            buf_.insert(buf_.end(), chunk.data(), chunk.data() + r);
+        else if (!buf_.empty())
+            std::vector<char>().swap(buf_);
+    }
+    if (!keep) return false;
+    int code = Z_OK;
+    gzerror(f, &code);
+    ended_ = true;
+    cutError_ = code != Z_OK;
+    if (cutError_) cutMessage_ = gzMessage(f);
+    head_ = 0;
+    return true;
 }
 
 size_t CGzInputStream::Read(void* buf, size_t n) {

@@ -96,15 +96,17 @@ std::vector<TEvalResult> compareRuns(const std::vector<TRunSpec>& runs,
     return rows;
 }
 
-void plotErrorsOverTime(const std::string& png, const std::vector<TEvalResult>& rows,
-                        const std::string& title) {
+namespace {
+void plotErrorsOf(const std::string& png, const std::vector<const TEvalResult*>& rows,
+                  const std::string& title) {
     const mrpt::img::TColor grey(130, 130, 130);
     TLinePlot p;
     p.title = title + ": robot position error";
     p.xLabel = "time [s]";
     p.yLabel = "dr [mm]";
     size_t k = 0;
-    for (const auto& r : rows) {
+    for (const TEvalResult* row : rows) {
+        const TEvalResult& r = *row;
         if (r.robot) {
             p.series.push_back(errorVsTime(r.label, r.robot->perPose));
             p.series.back().color = r.label == "odometry" ? grey : runColor(k++);
@@ -116,6 +118,19 @@ void plotErrorsOverTime(const std::string& png, const std::vector<TEvalResult>& 
     }
     if (p.series.empty()) throw std::invalid_argument("error plot: no robot path scored");
     plotLines(png, p);
+}
+}  // namespace
+
+void plotErrorsOverTime(const std::string& png, const std::vector<TEvalResult>& rows,
+                        const std::string& title) {
+    std::vector<const TEvalResult*> ptrs;
+    for (const auto& r : rows) ptrs.push_back(&r);
+    plotErrorsOf(png, ptrs, title);
+}
+
+void plotErrorsOverTime(const std::string& png, const TEvalResult& row,
+                        const std::string& title) {
+    plotErrorsOf(png, {&row}, title);
 }
 
 std::string toJsonRuns(const std::vector<TEvalResult>& rows) {

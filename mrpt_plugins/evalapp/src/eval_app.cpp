@@ -140,7 +140,7 @@ int runEvalApp(const TEvalArgs& a) {
     // Files first: a failure (e.g. a missing folder) then prints no results.
     const std::string json = toJson(r);
     if (!a.plot.empty()) plotMapFigure(a.plot, fig);
-    if (!a.errorPlot.empty()) plotErrorsOverTime(a.errorPlot, {r}, fig.title);
+    if (!a.errorPlot.empty()) plotErrorsOverTime(a.errorPlot, r, fig.title);
     if (!a.jsonFile.empty())
         rfir::common::writeFileAtomically(a.jsonFile,
                                           [&](std::ostream& o) { o << json << "\n"; });

@@ -271,7 +271,7 @@ std::optional<rfir::eval::TEvalResult> writeAndScore(
     rfir::eval::saveScene3D(out.file("scene" + sfx + ".3Dscene"), fig, truth.readers);
     if (r) {
         writeErrors(out.file("errors" + sfx + ".json"), *r);
-        rfir::eval::plotErrorsOverTime(out.file("error_time" + sfx + ".png"), {*r},
+        rfir::eval::plotErrorsOverTime(out.file("error_time" + sfx + ".png"), *r,
                                        fig.title);
     }
     return r;

@@ -23,7 +23,12 @@ class CGzInputStream : public mrpt::io::CStream, public rfir::obs::IBytesLeft {
     /** Opens `path`; throws std::runtime_error("PATH: is a directory" / "no
      * such file" / "cannot open ..."). Decompresses the file once to learn its
      * size (a truncated stream is only reported when the read gets there). */
-    void open(const std::string& path);
+    void open(const std::string& path) { open(path, kKeepInMemory); }
+    /** The same; a stream of at most keepInMemory uncompressed bytes is read
+     * whole during the sizing pass and served from memory (one decompression
+     * instead of two), a larger one is decompressed again as it is read. */
+    void open(const std::string& path, uint64_t keepInMemory);
+    static constexpr uint64_t kKeepInMemory = uint64_t(64) << 20;
     /** Reads up to n bytes; fewer only at the end of a complete stream.
      * Throws std::runtime_error when the data are damaged or cut short. */
     size_t Read(void* buf, size_t n) override;
@@ -39,6 +44,9 @@ class CGzInputStream : public mrpt::io::CStream, public rfir::obs::IBytesLeft {
     void close();
     /** The next chunk of decompressed bytes into buf_; false at the end. */
     bool refill();
+    /** Sizes the stream after its first byte; true if it was small enough
+     * to keep whole in buf_ (then read from there, without a rewind). */
+    bool sizeAndKeep(char first, uint64_t keepInMemory);
     std::string path_;
     std::vector<char> buf_;  //!< decompressed bytes, served from head_
     size_t head_ = 0;

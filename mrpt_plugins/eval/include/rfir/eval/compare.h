@@ -46,6 +46,9 @@ std::vector<TEvalResult> compareRuns(const std::vector<TRunSpec>& runs,
  * the colours compareRuns gives their paths, in order. */
 void plotErrorsOverTime(const std::string& png, const std::vector<TEvalResult>& rows,
                         const std::string& title);
+/** The same for one row, without copying it (its per-pose errors). */
+void plotErrorsOverTime(const std::string& png, const TEvalResult& row,
+                        const std::string& title);
 
 /** {"runs":[toJson(row), ...]} on one line. */
 std::string toJsonRuns(const std::vector<TEvalResult>& rows);

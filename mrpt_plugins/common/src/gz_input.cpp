@@ -75,16 +75,22 @@ bool CGzInputStream::sizeAndKeep(char first, uint64_t keepInMemory) {
     buf_.assign(1, first);
     total_ = 1;
     bool keep = true;
-    std::string chunk(kChunk, '\0');
-    for (int r; (r = gzread(f, chunk.data(), kChunk)) > 0;) {
+    for (;;) {
+        // Decompressed straight into buf_ while it is kept, else into a
+        // scratch chunk at its start that only counts.
+        const size_t at = keep ? buf_.size() : 0;
+        buf_.resize(at + kChunk);
+        const int r = gzread(f, buf_.data() + at, unsigned(kChunk));
+        buf_.resize(at + size_t(std::max(r, 0)));
+        if (r <= 0) break;
         total_ += uint64_t(r);
         keep = keep && total_ <= keepInMemory;
-        if (keep)
-            buf_.insert(buf_.end(), chunk.data(), chunk.data() + r);
-        else if (!buf_.empty())
-            std::vector<char>().swap(buf_);
+        if (!keep && buf_.capacity() > 2 * kChunk) std::vector<char>().swap(buf_);
     }
-    if (!keep) return false;
+    if (!keep) {
+        std::vector<char>().swap(buf_);
+        return false;
+    }
     int code = Z_OK;
     gzerror(f, &code);
     ended_ = true;

@@ -86,6 +86,10 @@ bool CRFIDTagParticleMap::updateTagsBeforeWeighing() const {
     return likelihoodOptions.robotUpdate == TRobotUpdatePolicy::Literal;
 }
 
+bool CRFIDTagParticleMap::weighsOnlyFirstReads() const {
+    return likelihoodOptions.robotUpdate == TRobotUpdatePolicy::Revisit;
+}
+
 std::string CRFIDTagParticleMap::landmarkName(int32_t id) const {
     if (id >= 0 && static_cast<size_t>(id) < m_landmarkNames.size() &&
         !m_landmarkNames[id].empty())

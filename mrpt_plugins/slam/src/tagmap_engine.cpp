@@ -202,11 +202,9 @@ void CTagMapEngine::resolveReads() {
     for (size_t j = 0; j < obs_.size(); j++)
         if (map_.genericMapParams.enableObservationLikelihood)
             map_.resolveRobotReads(*obs_[j], reads_[j]);
-    // The revisit policy weighs only a visit's first read, which is by
-    // definition unconfirmed: the confirmation would leave it nothing.
-    const bool firstReadOnly =
-        map_.likelihoodOptions.robotUpdate == rfir::maps::TRobotUpdatePolicy::Revisit;
-    if (cfg_.slam.read_confirm_window > 0 && !firstReadOnly)
+    // A visit's first read is by definition unconfirmed: under the policy
+    // that weighs only that read the confirmation would leave it nothing.
+    if (cfg_.slam.read_confirm_window > 0 && !map_.weighsOnlyFirstReads())
         confirmReads(cfg_.slam.read_confirm_window);
 }
 

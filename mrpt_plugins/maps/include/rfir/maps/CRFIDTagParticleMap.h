@@ -116,6 +116,8 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
      * BEFORE weighing its particles with computeObservationLikelihood (policy
      * Literal); false if it must weigh first, then insert (Revisit*). */
     bool updateTagsBeforeWeighing() const;
+    /** True if only a visit's first read weighs the robot (Revisit). */
+    bool weighsOnlyFirstReads() const;
 
     /** Names for CObservationBearingRange landmark IDs (index = ID), as in the
      * log header; IDs without a name use their decimal text. */

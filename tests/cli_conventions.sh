@@ -69,6 +69,11 @@ INT[rfir-ir-experiments]=--seeds
 REAL[rfir-ir-experiments]=-
 MISSING[rfir-ir-experiments]="--quick --only config"
 
+BASE[rfir-plain-ps]="--input $SRC/tests/data/textlog/rfid_short.txt --output out.tum"
+INT[rfir-plain-ps]=--particles
+REAL[rfir-plain-ps]=-
+MISSING[rfir-plain-ps]="--output out.tum"
+
 BASE[rfir-bench]="--quick --no-realtime --out-dir out"
 INT[rfir-bench]=--updates
 REAL[rfir-bench]=--realtime-seconds

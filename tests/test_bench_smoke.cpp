@@ -121,6 +121,9 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
         EXPECT_GT(p.at("cpu_seconds").get<double>(),
                   p.at("startup_cpu_seconds").get<double>())
             << p;
+        // rfir-plain-ps ran side by side on the same log, exported as text.
+        EXPECT_GT(p.at("plain_cpu_seconds").get<double>(), 0.0) << p;
+        EXPECT_TRUE(p.contains("mrpt_startup_cpu_seconds")) << p;
     }
     // Every case mapped the tags it was built with (N, or N = 10 / 100).
     size_t mapped10 = 0, mapped100 = 0;

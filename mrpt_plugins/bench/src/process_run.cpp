@@ -3,7 +3,10 @@
  * its ground truth, rfir-slam with the stock slam_ps.ini and every default
  * output (path, map, errors, plots, 3D scene). Timed from outside: the
  * child's user + system CPU (wait4) and its wall clock, so loading MRPT's
- * shared libraries, reading the rawlog and writing the outputs all count. */
+ * shared libraries, reading the rawlog and writing the outputs all count.
+ * Side by side in the same rounds: rfir-plain-ps, the plain reference as a
+ * whole program (no MRPT library), on the same log exported as text by
+ * rfir-import, writing its path. */
 #include <rfir/bench/bench.h>
 
 #include <rfir/slam/slam_config.h>
@@ -69,19 +72,98 @@ void mustSucceed(const TChildTimes& t, const std::vector<std::string>& args) {
                                  std::to_string(t.status) + "):" + cmd);
     }
 }
+
+/** The fastest of `rounds` runs of a program that only starts and exits. */
+double startupCpu(const std::vector<std::string>& args, size_t rounds) {
+    double best = 1e300;
+    for (size_t r = 0; r < rounds; r++) best = std::min(best, runChild(args).cpu);
+    return best;
+}
+
+/** An executable `name` on PATH, or "". */
+std::string onPath(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "";
+    for (size_t at = 0; at <= dirs.size();) {
+        size_t end = dirs.find(':', at);
+        if (end == std::string::npos) end = dirs.size();
+        const std::string f = dirs.substr(at, end - at) + "/" + name;
+        if (end > at && access(f.c_str(), X_OK) == 0) return f;
+        at = end + 1;
+    }
+    return "";
+}
+
+struct TPrograms {
+    std::string sim, slam, import, plain, tmp;
+};
+
+/** rfir-slam and rfir-plain-ps on one simulated log, alternating in each round. */
+void timeOnLog(const TBenchOptions& o, const TPrograms& pr, const std::string& ini,
+               TProcessRun& p) {
+    const std::string rawlog = pr.tmp + "/" + ini + ".rawlog",
+                      out = pr.tmp + "/out_" + ini;
+    const auto cfg =
+        rfir::slam::loadSlamConfigFile(o.configDir + "/slam_ps.ini", std::nullopt);
+    p.M = cfg.slam.robot_particles;
+    const std::vector<std::string> ra = {pr.slam,     "-q",
+                                         "--rawlog",  rawlog,
+                                         "--config",  o.configDir + "/slam_ps.ini",
+                                         "--seed",    std::to_string(o.seed),
+                                         "--out-dir", out};
+    std::vector<std::string> pa;
+    if (!pr.plain.empty()) {
+        const std::vector<std::string> ia = {pr.import, "-q", "-i",
+                                             rawlog,    "-o", rawlog + ".txt"};
+        mustSucceed(runChild(ia), ia);
+        const auto& m = cfg.motion;
+        char motion[256];
+        std::snprintf(motion, sizeof(motion), "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", m.a1,
+                      m.a2, m.a3, m.a4, m.min_std_xy, m.min_std_phi);
+        pa = {pr.plain,
+              "-i",
+              rawlog + ".txt",
+              "-o",
+              out + "_plain.tum",
+              "-m",
+              std::to_string(p.M),
+              "-s",
+              std::to_string(o.seed),
+              "--motion",
+              motion};
+    }
+    p.cpuSeconds = p.wallSeconds = p.plainCpuSeconds = p.plainWallSeconds = 1e300;
+    for (size_t r = 0; r < std::max<size_t>(1, o.rounds); r++) {
+        mrpt::system::deleteFilesInDirectory(out, true);
+        const auto t = runChild(ra);
+        mustSucceed(t, ra);
+        p.cpuSeconds = std::min(p.cpuSeconds, t.cpu);
+        p.wallSeconds = std::min(p.wallSeconds, t.wall);
+        if (pa.empty()) continue;
+        const auto tp = runChild(pa);
+        mustSucceed(tp, pa);
+        p.plainCpuSeconds = std::min(p.plainCpuSeconds, tp.cpu);
+        p.plainWallSeconds = std::min(p.plainWallSeconds, tp.wall);
+    }
+    if (pa.empty()) p.plainCpuSeconds = p.plainWallSeconds = 0;
+}
 }  // namespace
 
 std::vector<TProcessRun> runProcesses(const TBenchOptions& o) {
     const std::string dir = selfDir();
-    const std::string sim = dir + "/rfir-sim", slam = dir + "/rfir-slam";
-    if (!mrpt::system::fileExists(sim) || !mrpt::system::fileExists(slam)) return {};
-    // The logs and rfir-slam's outputs go to a scratch folder, removed after.
+    TPrograms pr{dir + "/rfir-sim", dir + "/rfir-slam", dir + "/rfir-import",
+                 dir + "/rfir-plain-ps", ""};
+    if (!mrpt::system::fileExists(pr.sim) || !mrpt::system::fileExists(pr.slam))
+        return {};
+    if (!mrpt::system::fileExists(pr.import) || !mrpt::system::fileExists(pr.plain))
+        pr.plain.clear();
+    // The logs and the programs' outputs go to a scratch folder, removed after.
     const char* tmpDir = std::getenv("TMPDIR");
     std::string tmpl =
         std::string(tmpDir && *tmpDir ? tmpDir : "/tmp") + "/rfir-bench-XXXXXX";
     if (!mkdtemp(tmpl.data()))
         throw std::runtime_error("rfir-bench: cannot make a scratch folder " + tmpl);
-    const std::string tmp = tmpl;
+    pr.tmp = tmpl;
     struct TLogSpec {
         std::string ini;
         double seconds;
@@ -90,14 +172,16 @@ std::vector<TProcessRun> runProcesses(const TBenchOptions& o) {
     const std::vector<TLogSpec> logs = {
         {"bench_floor_30x20", o.realtimeSeconds, true},
         {"sim_rfid_300mm_4tags_random", o.compareSeconds, false}};
+    const size_t rounds = std::max<size_t>(1, o.rounds);
+    const std::string rawlogEdit = onPath("rawlog-edit");
     std::vector<TProcessRun> out;
     for (const auto& l : logs) {
         char dur[64];
         std::snprintf(dur, sizeof(dur), "simulation.max_duration=%g", l.seconds);
-        std::vector<std::string> sa = {sim,         "-q",
+        std::vector<std::string> sa = {pr.sim,      "-q",
                                        "-c",        o.configDir + "/" + l.ini + ".ini",
                                        "-s",        std::to_string(o.seed),
-                                       "--out-dir", tmp,
+                                       "--out-dir", pr.tmp,
                                        "--set",     dur};
         if (l.floorEdits)
             for (const auto& e : o.simSets) sa.insert(sa.end(), {"--set", e});
@@ -105,31 +189,16 @@ std::vector<TProcessRun> runProcesses(const TBenchOptions& o) {
         TProcessRun p;
         p.log = l.ini + ".ini, " + std::to_string(int(l.seconds)) + " s";
         p.robotSeconds = l.seconds;
-        p.M = rfir::slam::loadSlamConfigFile(o.configDir + "/slam_ps.ini", std::nullopt)
-                  .slam.robot_particles;
-        p.cpuSeconds = p.wallSeconds = 1e300;
-        const std::vector<std::string> ra = {slam,        "-q",
-                                             "--rawlog",  tmp + "/" + l.ini + ".rawlog",
-                                             "--config",  o.configDir + "/slam_ps.ini",
-                                             "--seed",    std::to_string(o.seed),
-                                             "--out-dir", tmp + "/out_" + l.ini};
-        for (size_t r = 0; r < std::max<size_t>(1, o.rounds); r++) {
-            mrpt::system::deleteFilesInDirectory(tmp + "/out_" + l.ini, true);
-            const auto t = runChild(ra);
-            mustSucceed(t, ra);
-            p.cpuSeconds = std::min(p.cpuSeconds, t.cpu);
-            p.wallSeconds = std::min(p.wallSeconds, t.wall);
-        }
+        timeOnLog(o, pr, l.ini, p);
         // The same binary doing nothing but start and exit: the fixed cost of
-        // loading its shared libraries.
-        const std::vector<std::string> va = {slam, "--version"};
-        p.startupCpuSeconds = 1e300;
-        for (size_t r = 0; r < std::max<size_t>(1, o.rounds); r++)
-            p.startupCpuSeconds = std::min(p.startupCpuSeconds, runChild(va).cpu);
+        // loading its shared libraries; and MRPT's own program doing the same.
+        p.startupCpuSeconds = startupCpu({pr.slam, "--version"}, rounds);
+        if (!rawlogEdit.empty())
+            p.mrptStartupCpuSeconds = startupCpu({rawlogEdit, "--version"}, rounds);
         out.push_back(p);
     }
-    mrpt::system::deleteFilesInDirectory(tmp, true);
-    rmdir(tmp.c_str());
+    mrpt::system::deleteFilesInDirectory(pr.tmp, true);
+    rmdir(pr.tmp.c_str());
     return out;
 }
 

@@ -125,6 +125,9 @@ TJson processJson(const TProcessRun& p) {
     j["cpu_seconds"] = p6(p.cpuSeconds);
     j["wall_seconds"] = p6(p.wallSeconds);
     j["startup_cpu_seconds"] = p6(p.startupCpuSeconds);
+    j["plain_cpu_seconds"] = p6(p.plainCpuSeconds);
+    j["plain_wall_seconds"] = p6(p.plainWallSeconds);
+    j["mrpt_startup_cpu_seconds"] = p6(p.mrptStartupCpuSeconds);
     return j;
 }
 
@@ -193,8 +196,11 @@ void printTable(const TBenchReport& r, std::ostream& out) {
     printPlain(r, out);
     if (!r.process.empty()) out << "\nwhole rfir-slam processes (PS-SLAM, user + sys)\n";
     for (const auto& p : r.process)
-        out << row("  %s, M = %zu: %.3f s CPU, %.3f s wall (loading alone %.3f s)\n",
-                   p.log.c_str(), p.M, p.cpuSeconds, p.wallSeconds, p.startupCpuSeconds);
+        out << row(
+            "  %s, M = %zu: %.3f s CPU, %.3f s wall (loading alone %.3f s); "
+            "rfir-plain-ps %.3f s CPU; rawlog-edit --version %.3f s\n",
+            p.log.c_str(), p.M, p.cpuSeconds, p.wallSeconds, p.startupCpuSeconds,
+            p.plainCpuSeconds, p.mrptStartupCpuSeconds);
     out << "\ntargets\n";
     for (const auto& t : r.targets)
         out << (t.measured ? (t.pass ? "  PASS  " : "  FAIL  ") : "  n/a   ") << t.name

@@ -38,11 +38,19 @@ void processRows(std::ostream& o, const TBenchReport& r) {
     if (r.process.empty()) return;
     o << "\n**Whole rfir-slam processes** (`rfir-slam` on the simulated rawlog, "
          "stock `slam_ps.ini`, every default output; the child's user + system CPU "
-         "and wall clock, fastest round; loading: `rfir-slam --version`)\n\n| log | M | "
-         "CPU s | wall s | loading CPU s |\n| --- | ---: | ---: | ---: | ---: |\n";
+         "and wall clock, fastest round; loading: `rfir-slam --version`; side by side "
+         "in the same rounds, `rfir-plain-ps`, the plain reference as a whole program "
+         "without MRPT, on the same log exported as text; MRPT's own `rawlog-edit "
+         "--version`)\n\n| log | M | CPU s | wall s | loading CPU s | plain CPU s | "
+         "x plain | rawlog-edit --version CPU s |\n| --- | ---: | ---: | ---: | ---: | "
+         "---: | ---: | ---: |\n";
+    const auto opt = [](double v) { return v > 0 ? num(v, 2) : std::string("-"); };
     for (const auto& p : r.process)
         o << "| " << p.log << " | " << p.M << " | " << num(p.cpuSeconds, 2) << " | "
-          << num(p.wallSeconds, 2) << " | " << num(p.startupCpuSeconds, 2) << " |\n";
+          << num(p.wallSeconds, 2) << " | " << num(p.startupCpuSeconds, 2) << " | "
+          << opt(p.plainCpuSeconds) << " | "
+          << opt(p.plainCpuSeconds > 0 ? p.cpuSeconds / p.plainCpuSeconds : 0) << " | "
+          << opt(p.mrptStartupCpuSeconds) << " |\n";
 }
 
 void plainRows(std::ostream& o, const TBenchReport& r) {

@@ -104,6 +104,12 @@ struct TProcessRun {
     double cpuSeconds = 0;         //!< user + system, fastest round
     double wallSeconds = 0;        //!< wall clock, fastest round
     double startupCpuSeconds = 0;  //!< `rfir-slam --version`: loading alone
+    /** rfir-plain-ps on the same log exported as text, side by side in the
+     * same rounds (0: not run): user + system CPU, wall, fastest round. */
+    double plainCpuSeconds = 0, plainWallSeconds = 0;
+    /** MRPT's own rawlog-edit --version (0: not on PATH): what loading
+     * MRPT's shared libraries costs any MRPT program. */
+    double mrptStartupCpuSeconds = 0;
 };
 
 /** A pass/fail target with the numbers that decide it. */

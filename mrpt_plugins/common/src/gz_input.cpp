@@ -6,11 +6,27 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace rfir::common {
 namespace {
 constexpr size_t kChunk = 1 << 16;
+
+/** The gzip trailer's ISIZE (the uncompressed size mod 2^32), at most what
+ * deflate can expand the file to (1032:1), 0 if it cannot be read. Only a hint
+ * for reserving: a damaged or multi-member file may lie. */
+uint64_t trailerSize(const std::string& path) {
+    std::ifstream f(path, std::ios::binary | std::ios::ate);
+    const auto size = f ? int64_t(f.tellg()) : 0;
+    if (size < 18) return 0;
+    unsigned char b[4];
+    f.seekg(-4, std::ios::end);
+    if (!f.read(reinterpret_cast<char*>(b), 4)) return 0;
+    const uint64_t isize = uint64_t(b[0]) | uint64_t(b[1]) << 8 | uint64_t(b[2]) << 16 |
+                           uint64_t(b[3]) << 24;
+    return std::min(isize, uint64_t(size) * 1032);
+}
 
 std::string gzMessage(gzFile f) {
     int code = 0;
@@ -72,6 +88,8 @@ bool CGzInputStream::sizeAndKeep(char first, uint64_t keepInMemory) {
     // of two. A damaged or cut stream keeps its good bytes and the error,
     // raised when a read goes past them (as Read does when streaming).
     auto f = static_cast<gzFile>(gz_);
+    // Reserved once from the trailer's size (capped): no regrowth copies.
+    buf_.reserve(size_t(std::min(trailerSize(path_), keepInMemory)) + kChunk);
     buf_.assign(1, first);
     total_ = 1;
     bool keep = true;

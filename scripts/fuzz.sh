@@ -14,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 SECS=${1:-60}
 BUILD=${RFIR_FUZZ_BUILD:-build-fuzz}
-TARGETS=${RFIR_FUZZ_TARGETS:-textlog import rawlog ini mapfile tum}
+TARGETS=${RFIR_FUZZ_TARGETS:-textlog import rawlog ini mapfile tum plaintext}
 JOBS=${RFIR_JOBS:-$(nproc)}
 SEED=${RFIR_FUZZ_SEED:-1}
 if ! command -v clang++ >/dev/null; then

@@ -126,16 +126,18 @@ void TParser::record(const Tokens& t) {
 }  // namespace
 
 TPlainLog loadPlainTextLog(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::ostringstream ss;
+    if (!f || !(ss << f.rdbuf())) throw std::runtime_error(path + ": cannot read");
+    return parsePlainTextLog(ss.str(), path);
+}
+
+TPlainLog parsePlainTextLog(std::string text, const std::string& path) {
     TPlainLog log;
-    {
-        std::ifstream f(path, std::ios::binary);
-        std::ostringstream ss;
-        if (!f || !(ss << f.rdbuf())) throw std::runtime_error(path + ": cannot read");
-        log.text = ss.str();
-    }
+    log.text = std::make_shared<const std::string>(std::move(text));
     TParser p{path, 0, log, {}};
     Tokens tok;
-    const std::string_view all(log.text);
+    const std::string_view all(*log.text);
     for (size_t at = 0; at < all.size();) {
         size_t end = all.find('\n', at);
         if (end == std::string_view::npos) end = all.size();

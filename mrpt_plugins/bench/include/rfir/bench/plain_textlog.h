@@ -5,12 +5,15 @@
 
 #include <rfir/bench/plain_ps_core.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace rfir::bench {
 struct TPlainLog {
-    std::string text;  //!< the whole file: reads view their tag IDs in it
+    /** The whole file: reads view their tag IDs in it (held by pointer, so
+     * that moving the log keeps the views valid). */
+    std::shared_ptr<const std::string> text;
     double start[3] = {0, 0, 0};
     /** One sensing instant: its odometry increment (if any) and its reads
      * [firstRead, firstRead + nReads) of `reads`. */
@@ -26,5 +29,7 @@ struct TPlainLog {
 
 /** Throws std::runtime_error "PATH:LINE: what is wrong". */
 TPlainLog loadPlainTextLog(const std::string& path);
+/** The same on the file's text; `name` is the file named in errors. */
+TPlainLog parsePlainTextLog(std::string text, const std::string& name);
 
 }  // namespace rfir::bench

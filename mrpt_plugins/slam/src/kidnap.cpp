@@ -15,7 +15,7 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         c, s,
         {"enabled", "collapse_loglik", "collapse_steps", "min_tags", "max_gap",
          "evidence_drop", "fast_rate", "slow_rate", "inject_fraction",
-         "keep_heading_share", "heading_std"});
+         "keep_heading_share", "heading_std", "map_new_tags_in_run"});
     enabled = sec.getBool("enabled", enabled);
     // A mean log-likelihood per detection beyond +-1000 means nothing: a
     // density of e^1000 or a collapse on every step.
@@ -33,6 +33,7 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     keep_heading_share =
         sec.getDouble("keep_heading_share", keep_heading_share, R::closed(0, 1));
     heading_std = sec.getDouble("heading_std", heading_std, R::closed(0, M_PI));
+    map_new_tags_in_run = sec.getBool("map_new_tags_in_run", map_new_tags_in_run);
 }
 
 void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -56,6 +57,8 @@ void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "keep_heading_share", keep_heading_share, -1, -1,
             "share of those keeping the current heading");
     c.write(s, "heading_std", heading_std, -1, -1, "their heading std [rad]");
+    c.write(s, "map_new_tags_in_run", map_new_tags_in_run, -1, -1,
+            "while a run is open, RFID tags never mapped are still mapped");
 }
 
 bool CKidnapMonitor::update(const TStepEvidence& e) {

@@ -2,6 +2,7 @@
 #include <rfir/models/ini_reader.h>
 #include <rfir/models/resampling.h>
 #include <rfir/models/robot_resampling.h>
+#include <rfir/obs/CObservationRFIDReaders.h>
 #include <rfir/slam/CRobotPoseParticles.h>
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
@@ -121,6 +122,28 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                 corr_.mapped(d->id, d->kind != TDetection::Kind::RFID, e->estimate.mean.x,
                              e->estimate.mean.y, m);
     }
+    /** While the kidnap check's run is open ([kidnap] map_new_tags_in_run):
+     * only the RFID tags never mapped, from a copy of the observation. */
+    void insertNewOnly(const mrpt::poses::CPose2D& at) {
+        if (obs_.empty()) return;
+        auto* rf = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(obs_[0].get());
+        if (!rf) return;
+        auto copy = std::make_shared<rfir::obs::CObservationRFIDReaders>(*rf);
+        bool any = false;
+        for (auto& r : copy->readings) {
+            auto& t = r.tags;
+            t.erase(
+                std::remove_if(t.begin(), t.end(),
+                               [&](const std::string& id) { return map_.getTag(id); }),
+                t.end());
+            any = any || !t.empty();
+        }
+        if (!any) return;
+        const auto saved = obs_;
+        obs_.assign(1, copy);
+        insert(at);
+        obs_ = saved;
+    }
     /** End of a weighing step with map_correction: the tags still correlated
      * with the robot follow its correction (tag_correlation.h). */
     void correctMap(bool reset) {
@@ -185,6 +208,8 @@ void CTagMapEngine::afterMotion() {
     predictedForInsert_.reset();
     if (literal_ && mapThisStep_)
         insert(pf_.meanPose());
+    else if (literal_ && cfg_.kidnap.map_new_tags_in_run)
+        insertNewOnly(pf_.meanPose());
     else if (!literal_ &&
              cfg_.slam.tag_update_pose == TSlamOptions::TTagUpdatePose::Predicted)
         predictedForInsert_ = pf_.meanPose();
@@ -317,6 +342,8 @@ void CTagMapEngine::step(const TSlamInput& in) {
     pose_ = pf_.meanPose();
     if (!literal_ && mapThisStep_)
         insert(predictedForInsert_ ? *predictedForInsert_ : pose_);
+    else if (!literal_ && cfg_.kidnap.map_new_tags_in_run)
+        insertNewOnly(predictedForInsert_ ? *predictedForInsert_ : pose_);
 }
 
 std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {

@@ -48,6 +48,11 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions {
      * (with heading_std noise); the rest get a uniform heading. */
     double keep_heading_share = 0.5;
     double heading_std = 0.1;  //!< rad
+    /** While a run of disagreeing steps is open the known tags are not
+     * updated (they would be from a wrong pose); RFID tags never mapped
+     * still are (else a drifting filter leaves every tag it meets then out
+     * of the map). */
+    bool map_new_tags_in_run = true;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;

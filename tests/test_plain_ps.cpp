@@ -98,6 +98,33 @@ TEST(PlainTextLog, BadLinesNameFileAndLine) {
     EXPECT_NE(loadError(d / "none.txt", "").find("none.txt"), std::string::npos);
 }
 
+TEST(PlainTextLog, EveryByteFlipIsReadOrRefusedByLine) {
+    // Each byte of a real log replaced by three others: the reader accepts the
+    // result or refuses it naming the file and a line; it never crashes.
+    std::ifstream f(std::string(RFIR_SOURCE_DIR) + "/tests/data/textlog/rfid_short.txt");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    const std::string good = ss.str();
+    ASSERT_GT(good.size(), 1000u);
+    size_t refused = 0, accepted = 0;
+    for (size_t i = 0; i < good.size(); i++)
+        for (const char c : {'\0', '-', 'x'}) {
+            if (good[i] == c) continue;
+            std::string bad = good;
+            bad[i] = c;
+            try {
+                rfir::bench::parsePlainTextLog(bad, "f.txt");
+                accepted++;
+            } catch (const std::runtime_error& e) {
+                const std::string m = e.what();
+                EXPECT_EQ(m.rfind("f.txt:", 0), 0u) << m;
+                refused++;
+            }
+        }
+    EXPECT_GT(refused, 0u);
+    EXPECT_GT(accepted, 0u);  // e.g. a flip inside a comment or a tag ID
+}
+
 TEST(PlainPsProgram, CommandLineConventions) {
     rfir_test::TmpDir d;
     const std::string p = kBin + "rfir-plain-ps";

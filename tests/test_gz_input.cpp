@@ -4,6 +4,8 @@
 // damaged stream, the same good bytes before the same error.
 #include <rfir/common/gz_input.h>
 
+#include "test_tmpdir.h"
+
 #include <gtest/gtest.h>
 #include <zlib.h>
 
@@ -70,8 +72,8 @@ void expectSameBothWays(const fs::path& p, const std::string& what) {
 }  // namespace
 
 TEST(GzInput, MemoryAndStreamingReadTheSameBytes) {
-    const fs::path d = fs::temp_directory_path() / "rfir_gz_input_test";
-    fs::create_directories(d);
+    const rfir_test::TmpDir tmp;
+    const fs::path d = tmp.p;
     std::string plain;
     const std::string gz = writeGz(d / "whole.gz", &plain);
     const auto mem = readAll(d / "whole.gz", rfir::common::CGzInputStream::kKeepInMemory);
@@ -103,5 +105,4 @@ TEST(GzInput, MemoryAndStreamingReadTheSameBytes) {
         }
         expectSameBothWays(p, name);
     }
-    fs::remove_all(d);
 }

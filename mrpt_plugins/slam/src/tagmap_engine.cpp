@@ -106,13 +106,16 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         if (i < baseLogLik_.size()) baseLogLik_[i] = base;
         return ll;
     }
-    void insert(const mrpt::poses::CPose2D& at) {
+    void insert(const mrpt::poses::CPose2D& at) { insert(at, obs_); }
+    /** Inserts `obs` (this step's observations, or a part of them). */
+    void insert(const mrpt::poses::CPose2D& at,
+                const std::vector<mrpt::obs::CObservation::Ptr>& obs) {
         if (map_.usesRobotSamples()) drawRobotSamples();
         std::vector<const TDetection*> fresh;  // first reads: join the correction
         if (cfg_.slam.map_correction)
             for (const auto& d : dets_)
                 if (!mapEntry(map_, d)) fresh.push_back(&d);
-        for (const auto& o : obs_) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
+        for (const auto& o : obs) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
         if (fresh.empty()) return;
         // The robot's moments after this step's weighing, or now if it did not weigh.
         const auto post = pf_.posteriorMoments();
@@ -138,11 +141,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                 t.end());
             any = any || !t.empty();
         }
-        if (!any) return;
-        const auto saved = obs_;
-        obs_.assign(1, copy);
-        insert(at);
-        obs_ = saved;
+        if (any) insert(at, {copy});
     }
     /** End of a weighing step with map_correction: the tags still correlated
      * with the robot follow its correction (tag_correlation.h). */

@@ -268,3 +268,30 @@ TEST(SlamKidnap, RecoversWithin5sOnStockInis) {
         }
     }
 }
+
+// Range-and-bearing reads (1 cm range noise) cost about 110 per read for a
+// landmark 15 cm off, so before `[kidnap] rb_loglik_scale` the detector reset
+// PF and PS once each on sim_rb_rotation seed 1 (at 146.7 s, with nobody
+// carrying the robot). No reset there now, and a kidnapping on the same INI
+// (at 120 s, 2 s carried, to the pose of 40 s) still resets within 5 s of
+// the put-down.
+TEST(SlamKidnap, RangeBearingResetsOnlyWhenKidnapped) {
+    const uint64_t seed = 1;
+    auto cfg = stockSim("sim_rb_rotation.ini");
+    const auto normalSim = rfir::sim::simulate(cfg, seed);
+    cfg.kidnap.enabled = true;
+    cfg.kidnap.time = 120;
+    cfg.kidnap.carryTime = 2;
+    cfg.kidnap.toTime = 40;
+    const auto kidnapSim = rfir::sim::simulate(cfg, seed);
+    for (const char* m : {"pf", "ps"}) {
+        const auto n = runMethod(normalSim, stockConfig(m), seed);
+        const auto k = runMethod(kidnapSim, stockConfig(m), seed);
+        std::printf("rb %s: %zu resets without a kidnapping (robot %.1f mm), %zu with\n",
+                    m, n.run.resets, 1e3 * n.robot, k.run.resets);
+        EXPECT_EQ(n.run.resets, 0u) << m;
+        ASSERT_FALSE(k.run.resetTimes.empty()) << m;
+        EXPECT_GE(k.run.resetTimes.front(), cfg.kidnapLiftClock()) << m;
+        EXPECT_LE(k.run.resetTimes.front(), cfg.kidnapDownClock() + 5) << m;
+    }
+}

@@ -15,7 +15,7 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         c, s,
         {"enabled", "collapse_loglik", "collapse_steps", "min_tags", "max_gap",
          "evidence_drop", "fast_rate", "slow_rate", "inject_fraction",
-         "keep_heading_share", "heading_std", "map_new_tags_in_run"});
+         "keep_heading_share", "heading_std", "map_new_tags_in_run", "rb_loglik_scale"});
     enabled = sec.getBool("enabled", enabled);
     // A mean log-likelihood per detection beyond +-1000 means nothing: a
     // density of e^1000 or a collapse on every step.
@@ -34,6 +34,8 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         sec.getDouble("keep_heading_share", keep_heading_share, R::closed(0, 1));
     heading_std = sec.getDouble("heading_std", heading_std, R::closed(0, M_PI));
     map_new_tags_in_run = sec.getBool("map_new_tags_in_run", map_new_tags_in_run);
+    rb_loglik_scale =
+        sec.getDouble("rb_loglik_scale", rb_loglik_scale, R::aboveZero(1e6));
 }
 
 void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -59,6 +61,8 @@ void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "heading_std", heading_std, -1, -1, "their heading std [rad]");
     c.write(s, "map_new_tags_in_run", map_new_tags_in_run, -1, -1,
             "while a run is open, RFID tags never mapped are still mapped");
+    c.write(s, "rb_loglik_scale", rb_loglik_scale, -1, -1,
+            "range-bearing log-likelihoods enter the evidence times this");
 }
 
 bool CKidnapMonitor::update(const TStepEvidence& e) {

@@ -1,6 +1,8 @@
 /* rfir_slam: parts checked alone (copy-on-write trie, EKF by hand, FastSLAM
  * copy counting, INI rejection, sensor resetting geometry). */
 #include <rfir/models/random.h>
+#include <rfir/models/robot_resampling.h>
+#include <rfir/slam/CRobotPoseParticles.h>
 #include <rfir/slam/CFastSLAMParticles.h>
 #include <rfir/slam/kidnap.h>
 #include <rfir/slam/persistent_vector.h>
@@ -223,4 +225,41 @@ TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
         EXPECT_FALSE(ghost.suspicious());
     }
     EXPECT_EQ(ghost.resets(), 0u);
+}
+
+// Sensor resetting weighs what it injects (Mixture MCL): a pose that explains
+// the step gets the step's best prior weight plus its own term, so it
+// outweighs every particle of the lost set, and a pose that explains nothing
+// does not (before, each injected pose got the lost set's best weight).
+TEST(SlamKidnap, InjectedPosesAreWeighedByTheStep) {
+    struct TModel : CRobotPoseParticles::IStepModel {
+        void afterMotion() override {}
+        bool weighs() const override { return true; }
+        double logLikelihood(size_t, const CParticlePose2D& p) const override {
+            return ll(p);
+        }
+        static double ll(const mrpt::poses::CPose2D& p) {  // the truth is at (1, 0)
+            return -50.0 * ((p.x() - 1) * (p.x() - 1) + p.y() * p.y());
+        }
+    } model;
+    rfir::models::TRandom rng(5);
+    CRobotPoseParticles pf;
+    pf.reset(mrpt::poses::CPose2D(0, 0, 0), 100, 0.05, 0.01, rng);  // lost
+    pf.setStepModel(&model);
+    mrpt::bayes::CParticleFilter filter;
+    filter.m_options = rfir::models::withoutMrptResampling(filter.m_options);
+    mrpt::obs::CActionCollection none;
+    filter.executeOn(pf, &none, nullptr);
+    double bestOld = -1e300;
+    for (size_t i = 0; i < pf.m_particles.size(); i++) bestOld = std::max(bestOld, pf.getW(i));
+    const double prior = pf.bestPriorLogW();
+    const mrpt::poses::CPose2D good(1, 0, 0), bad(3, 0, 0);
+    pf.replacePose(0, good, prior + TModel::ll(good), TModel::ll(good));
+    pf.replacePose(1, bad, prior + TModel::ll(bad), TModel::ll(bad));
+    EXPECT_GT(pf.getW(0), bestOld + 20);
+    EXPECT_LT(pf.getW(1), bestOld - 100);
+    // The step's evidence still reads the weighing's terms: both now carry
+    // the best prior under their own terms.
+    EXPECT_NEAR(pf.getW(0) - pf.stepLogLik()[0], prior, 1e-9);
+    EXPECT_NEAR(pf.getW(1) - pf.stepLogLik()[1], prior, 1e-9);
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -92,14 +93,21 @@ std::optional<TPoseMoments> CRobotPoseParticles::posteriorMoments() const {
     return m_post.moments();
 }
 
-void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p) {
-    double best = -1e300;
-    for (const auto& q : m_particles) best = std::max(best, q.log_w);
-    // A resetting moves the pose; the particle keeps its drift hypothesis.
+void CRobotPoseParticles::replacePose(size_t i, const mrpt::poses::CPose2D& p,
+                                      double logW, double stepLogLik) {
     m_particles.at(i).d = p;
-    m_particles.at(i).log_w = best;
+    m_particles.at(i).log_w = logW;
+    if (i < m_stepLogLik.size()) m_stepLogLik[i] = stepLogLik;
     m_postValid = false;
     m_ess = -1;
+}
+
+double CRobotPoseParticles::bestPriorLogW() const {
+    const bool weighed = m_stepLogLik.size() == m_particles.size();
+    double best = -std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < m_particles.size(); i++)
+        best = std::max(best, m_particles[i].log_w - (weighed ? m_stepLogLik[i] : 0.0));
+    return best;
 }
 
 double CRobotPoseParticles::getW(size_t i) const {

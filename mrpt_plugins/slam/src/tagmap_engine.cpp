@@ -302,8 +302,15 @@ void CTagMapEngine::checkKidnap() {
     const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
     const auto poses = resettingPoses(knownAnchors(map_, dets_), n, pf_.meanPose().phi(),
                                       cfg_.kidnap, rng_);
-    for (size_t k = 0; k < poses.size(); k++)
-        pf_.replacePose(rng_.drawUniform32bit() % M, poses[k]);
+    // Mixture MCL (Thrun et al. 2001): each drawn pose is weighed by this
+    // step's reads with the weighing's own callable, on the best prior
+    // weight, so that resampling keeps the poses that explain every read,
+    // not only the one they were drawn from.
+    const double prior = pf_.bestPriorLogW();
+    for (const auto& p : poses) {
+        const double ll = weigh(SIZE_MAX, CParticlePose2D(p));
+        pf_.replacePose(rng_.drawUniform32bit() % M, p, prior + ll, ll);
+    }
 }
 
 void CTagMapEngine::step(const TSlamInput& in) {

@@ -77,9 +77,14 @@ class CRobotPoseParticles
     double stepLogEvidence(const std::vector<double>& terms) const;
     /** @} */
 
-    /** Replaces particle i's pose, giving it the current best weight (sensor
-     * resetting). */
-    void replacePose(size_t i, const mrpt::poses::CPose2D& p);
+    /** Replaces particle i's pose (sensor resetting), with the log-weight
+     * `logW` and this step's weighing term `stepLogLik` at the new pose. The
+     * particle keeps its drift hypothesis. */
+    void replacePose(size_t i, const mrpt::poses::CPose2D& p, double logW,
+                     double stepLogLik);
+    /** The highest prior log-weight of this step (log_w minus its weighing
+     * term); the current best log-weight when the step did not weigh. */
+    double bestPriorLogW() const;
 
     /** @name CParticleFilterCapable, on m_particles directly: the same
      * arithmetic as MRPT's CParticleFilterDataImpl, without its dynamic_cast

@@ -2,8 +2,8 @@
  * copy counting, INI rejection, sensor resetting geometry). */
 #include <rfir/models/random.h>
 #include <rfir/models/robot_resampling.h>
-#include <rfir/slam/CRobotPoseParticles.h>
 #include <rfir/slam/CFastSLAMParticles.h>
+#include <rfir/slam/CRobotPoseParticles.h>
 #include <rfir/slam/kidnap.h>
 #include <rfir/slam/persistent_vector.h>
 #include <rfir/slam/slam_config.h>
@@ -251,7 +251,8 @@ TEST(SlamKidnap, InjectedPosesAreWeighedByTheStep) {
     mrpt::obs::CActionCollection none;
     filter.executeOn(pf, &none, nullptr);
     double bestOld = -1e300;
-    for (size_t i = 0; i < pf.m_particles.size(); i++) bestOld = std::max(bestOld, pf.getW(i));
+    for (size_t i = 0; i < pf.m_particles.size(); i++)
+        bestOld = std::max(bestOld, pf.getW(i));
     const double prior = pf.bestPriorLogW();
     const mrpt::poses::CPose2D good(1, 0, 0), bad(3, 0, 0);
     pf.replacePose(0, good, prior + TModel::ll(good), TModel::ll(good));

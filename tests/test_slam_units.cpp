@@ -200,12 +200,30 @@ TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
     EXPECT_TRUE(m.update(step(3, -1000, {"B"})));
     EXPECT_FALSE(m.update(step(4, -0.1, {})));
     EXPECT_FALSE(m.suspicious());
-    // A mild disagreement over many tags is a drifted filter, not a kidnapping.
+    // A mild disagreement over many tags is not a drop: with the persistence
+    // criterion off (stock), no reset however many tags disagree.
+    ASSERT_EQ(o.persist_tags, 0u);
     CKidnapMonitor mild(o);
     EXPECT_FALSE(mild.update(step(0, -0.1, {})));
     for (int k = 1; k < 20; k++)
         EXPECT_FALSE(mild.update(step(k, -10, {"T" + std::to_string(k)})));
     EXPECT_EQ(mild.resets(), 0u);
+    // With it (persist_tags = 12): a run that 12 distinct tags contradict,
+    // with no agreeing read, resets at its 12th tag (a robot put down a metre
+    // away among 300 mm readers); one agreeing read before that ends the run.
+    o.persist_tags = 12;
+    CKidnapMonitor persist(o);
+    EXPECT_FALSE(persist.update(step(0, -0.1, {})));
+    for (int k = 1; k < 12; k++)
+        EXPECT_FALSE(persist.update(step(0.1 * k, -10, {"T" + std::to_string(k)})));
+    EXPECT_TRUE(persist.update(step(1.2, -10, {"T12"})));
+    CKidnapMonitor corrected(o);
+    EXPECT_FALSE(corrected.update(step(0, -0.1, {})));
+    for (int k = 1; k < 20; k++) {
+        auto e = step(0.1 * k, -10, {"T" + std::to_string(k)});
+        if (k == 11) e.agreeing = 1;
+        EXPECT_FALSE(corrected.update(e)) << k;
+    }
     // A run ends after max_gap seconds without a disagreeing step.
     CKidnapMonitor gap(o);
     EXPECT_FALSE(gap.update(step(0, -0.1, {})));

@@ -14,7 +14,7 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     const rfir::ini::CIniSection sec(
         c, s,
         {"enabled", "collapse_loglik", "collapse_steps", "min_tags", "max_gap",
-         "evidence_drop", "fast_rate", "slow_rate", "inject_fraction",
+         "evidence_drop", "persist_tags", "fast_rate", "slow_rate", "inject_fraction",
          "keep_heading_share", "heading_std", "map_new_tags_in_run", "rb_loglik_scale"});
     enabled = sec.getBool("enabled", enabled);
     // A mean log-likelihood per detection beyond +-1000 means nothing: a
@@ -26,6 +26,8 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     min_tags = unsigned(sec.getInt("min_tags", int64_t(min_tags), 1, 1000000));
     max_gap = sec.getDouble("max_gap", max_gap, R::aboveZero(1e6));
     evidence_drop = sec.getDouble("evidence_drop", evidence_drop, R::closed(0, 1e6));
+    persist_tags =
+        unsigned(sec.getInt("persist_tags", int64_t(persist_tags), 0, 1000000));
     fast_rate = sec.getDouble("fast_rate", fast_rate, R::aboveZero(1));
     slow_rate = sec.getDouble("slow_rate", slow_rate, R::aboveZero(1));
     if (slow_rate > fast_rate) sec.fail("slow_rate", "must not exceed fast_rate");
@@ -52,6 +54,8 @@ void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
             "...ended by an agreeing step or this long [s] without a disagreeing one");
     c.write(s, "evidence_drop", evidence_drop, -1, -1,
             "and the fast evidence average this far below the slow one");
+    c.write(s, "persist_tags", int(persist_tags), -1, -1,
+            "or this many distinct landmarks contradicted in the run (0: off)");
     c.write(s, "fast_rate", fast_rate, -1, -1, "fast average rate per weighing step");
     c.write(s, "slow_rate", slow_rate, -1, -1, "slow average rate per weighing step");
     c.write(s, "inject_fraction", inject_fraction, -1, -1,
@@ -84,9 +88,10 @@ bool CKidnapMonitor::update(const TStepEvidence& e) {
     ids_.insert(e.disagreeing.begin(), e.disagreeing.end());
     // The drop is measured against the slow average from before this run
     // took it down, so a long run cannot hide itself.
-    if (bad_ < o_.collapse_steps || ids_.size() < o_.min_tags ||
-        *fast_ > slowAtRunStart_ - o_.evidence_drop)
-        return false;
+    if (bad_ < o_.collapse_steps || ids_.size() < o_.min_tags) return false;
+    const bool dropped = *fast_ <= slowAtRunStart_ - o_.evidence_drop;
+    const bool persistent = o_.persist_tags > 0 && ids_.size() >= o_.persist_tags;
+    if (!dropped && !persistent) return false;
     endRun();
     ++resets_;
     return true;

@@ -41,6 +41,12 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions {
      * revisited tag measured at most 41 on the stock INIs, a kidnapping
      * 200 at 300 mm and 4000 at 60 mm). */
     double evidence_drop = 100.0;
+    /** Or, without the drop: this many distinct known landmarks contradicted
+     * in one run with no agreeing read (0: off, stock). A robot put down a
+     * metre away among 300 mm readers drops its evidence by only 15-20 per
+     * read and is caught by this (12: after 12-29 s); but so are drifted
+     * runs of 60 mm readers on a noisy odometry (docs/slam.md, "Kidnapping"). */
+    unsigned persist_tags = 0;
     double fast_rate = 0.5;        //!< per weighing step (0, 1]
     double slow_rate = 0.02;       //!< per weighing step (0, 1]
     double inject_fraction = 0.5;  //!< of the robot particles, per resetting

@@ -21,14 +21,14 @@ namespace rfir::slam {
 using rfir::maps::CRFIDTagParticleMap;
 
 namespace {
-/** This step's detections of landmarks the map already has: where sensor
- * resetting may put the robot. */
 /** The map's entry for a detection's tag or landmark, if mapped. */
 const CRFIDTagParticleMap::TTagEntry* mapEntry(const CRFIDTagParticleMap& map,
                                                const TDetection& d) {
     return d.kind == TDetection::Kind::RFID ? map.getTag(d.id) : map.getLandmark(d.id);
 }
 
+/** This step's detections of landmarks the map already has: where sensor
+ * resetting may put the robot. */
 std::vector<TAnchor> knownAnchors(const CRFIDTagParticleMap& map,
                                   const std::vector<TDetection>& dets) {
     std::vector<TAnchor> out;

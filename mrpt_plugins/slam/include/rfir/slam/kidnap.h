@@ -44,7 +44,7 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions {
     /** Or, without the drop: this many distinct known landmarks contradicted
      * in one run with no agreeing read (0: off, stock). A robot put down a
      * metre away among 300 mm readers drops its evidence by only 15-20 per
-     * read and is caught by this (12: after 12-29 s); but so are drifted
+     * read and is caught by this (12: 17-29 s after the put-down); but so are drifted
      * runs of 60 mm readers on a noisy odometry (docs/slam.md, "Kidnapping"). */
     unsigned persist_tags = 0;
     double fast_rate = 0.5;        //!< per weighing step (0, 1]

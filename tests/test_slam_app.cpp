@@ -2,6 +2,7 @@
  * output written, ground truth found beside the rawlog; bad settings refused
  * with the INI key named. */
 #include "test_slam_sim.h"
+#include "test_tmpdir.h"
 
 #include <rfir/common/trajectory_io.h>
 #include <rfir/sim/simulator.h>
@@ -46,12 +47,14 @@ const rfir::sim::TSimOutput& simulated() {
     }();
     return out;
 }
+/** The simulated run's files, in a folder removed when the process exits. */
 std::string dataDir() {
-    static std::string dir;
-    if (!dir.empty()) return dir;
-    dir = mrpt::system::getTempFileName() + "_slamapp";
-    mrpt::system::createDirectory(dir);
-    rfir::sim::writeOutputs(simulated(), dir, "run");
+    static const rfir_test::TmpDir tmp;
+    static const std::string dir = [] {
+        const std::string d = tmp.p.string();
+        rfir::sim::writeOutputs(simulated(), d, "run");
+        return d;
+    }();
     return dir;
 }
 }  // namespace

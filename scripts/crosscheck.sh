@@ -3,7 +3,8 @@
 # scripts/crosscheck/textlog_sim.py (not rfir-sim), imported with rfir-import,
 # run with the stock INIs of PF-SLAM, PS-SLAM and FastSLAM, scored with
 # rfir-eval (dead reckoning from the rawlog's odometry). Prints one markdown
-# row per scenario: mean robot / tag error in mm over the seeds.
+# row per scenario: mean robot / tag error in mm over the seeds, and the
+# kidnap resets summed over the seeds.
 #
 #   bash scripts/crosscheck.sh [--seeds N] [--out DIR] [--config-dir DIR] [--scenarios a,b]
 # --config-dir defaults to config_ini (the stock INIs as in the source tree);
@@ -41,8 +42,12 @@ declare -A SC=(
   [big300]="--layout ring8_300 --density 4 --path random --area 30x20 --duration 200"
   [kid60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 200 --kidnap 90"
   [kid300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 200 --kidnap 100"
+  [faults60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 300 --scale 1.02 --drift 0.005 --slips 3 --dead 2,100,160 --ghost 0.005"
+  [faults300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 300 --scale 1.02 --drift 0.005 --slips 3 --dead 2,100,160 --ghost 0.005"
+  [rr60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150 --async --odom-hz 25 --rr-hz 5 --lag 0.02"
+  [explore60]="--layout ring8_60 --density 16 --path random --area 10x8 --duration 2400"
 )
-ORDER="loop60 async60 slow60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300"
+ORDER="loop60 async60 slow60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300 faults60 faults300 rr60 explore60"
 [ -n "$ONLY" ] && ORDER=${ONLY//,/ }
 [[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
 for m in pf ps fastslam; do
@@ -52,10 +57,10 @@ for sc in $ORDER; do
   [ -n "${SC[$sc]:-}" ] || { echo "crosscheck.sh: unknown scenario '$sc' (known: ${!SC[*]})" >&2; exit 2; }
 done
 mkdir -p "$OUT"
-echo "| scenario | PF-SLAM | PS-SLAM | FastSLAM | dead reckoning |"
-echo "| --- | --- | --- | --- | --- |"
+echo "| scenario | PF-SLAM | PS-SLAM | FastSLAM | dead reckoning | resets PF / PS |"
+echo "| --- | --- | --- | --- | --- | --- |"
 for sc in $ORDER; do
-  res="$OUT/$sc.results"; : > "$res"
+  res="$OUT/$sc.results"; : > "$res"; : > "$OUT/$sc.resets"
   for s in $(seq 1 "$SEEDS"); do
     n="$OUT/${sc}_$s"
     # shellcheck disable=SC2086
@@ -70,11 +75,16 @@ for sc in $ORDER; do
       "$BIN/rfir-eval" --json-only "${dr[@]}" --rawlog "$n.rawlog" --path "${n}_$m/path.tum" \
         --gt-path "$n.gt.tum" --map "${n}_$m/map.txt" --gt-map "$n.gt_map.txt" \
         | sed "s/^/$m /" >> "$res"
+      python3 -c 'import json,sys; print(sys.argv[1], json.load(open(sys.argv[2]))["kidnap_resets"])' \
+        "$m" "${n}_$m/stats.json" >> "$OUT/$sc.resets"
     done
   done
-  python3 - "$sc" "$res" <<'PY'
+  python3 - "$sc" "$res" "$OUT/$sc.resets" <<'PY'
 import json, sys
-acc = {}
+acc, resets = {}, {}
+for line in open(sys.argv[3]):
+    m, n = line.split()
+    resets[m] = resets.get(m, 0) + int(n)
 for line in open(sys.argv[2]):
     m, j = line.split(" ", 1)
     d = json.loads(j)
@@ -85,6 +95,7 @@ def cell(k):
     v = acc[k]; r = 1e3 * sum(a for a, _ in v) / len(v)
     if v[0][1] is None: return "%.1f" % r
     return "%.1f / %.1f" % (r, 1e3 * sum(b for _, b in v) / len(v))
-print("| %s | %s | %s | %s | %s |" % (sys.argv[1], cell("pf"), cell("ps"), cell("fastslam"), cell("dr")))
+print("| %s | %s | %s | %s | %s | %d / %d |" % (sys.argv[1], cell("pf"), cell("ps"), cell("fastslam"),
+                                          cell("dr"), resets.get("pf", 0), resets.get("ps", 0)))
 PY
 done

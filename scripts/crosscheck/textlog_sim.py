@@ -23,6 +23,18 @@ ap.add_argument("--async", dest="async_", action="store_true",
                 help="odometry at --odom-hz, each reader polled at its own time")
 ap.add_argument("--odom-hz", type=float, default=50.0,
                 help="odometry rate with --async (default 50)")
+ap.add_argument("--rr-hz", type=float, default=0.0,
+                help="readers polled round robin, each at this rate (with --async; "
+                     "0: every reader once per odometry interval)")
+ap.add_argument("--lag", type=float, default=0.0,
+                help="odometry latency, s: a record stamped T tells the pose of T - lag")
+ap.add_argument("--scale", type=float, default=1.0, help="odometry translation scale")
+ap.add_argument("--drift", type=float, default=0.0, help="odometry heading drift, rad/m")
+ap.add_argument("--slips", type=int, default=0,
+                help="wheel slips: odometry jumps 0.1-0.3 m forward that the robot did not make")
+ap.add_argument("--dead", default="", help="reader index,from,to (s): it reads nothing then")
+ap.add_argument("--ghost", type=float, default=0.0,
+                help="per poll: the reader also reports a real tag 0.2-0.6 m from it")
 ap.add_argument("--t0", type=float, default=0.0, help="first timestamp, s")
 ap.add_argument("--kidnap", type=float, default=-1,
                 help="at this time the robot is carried 2 s (no records) to a random spot")
@@ -41,6 +53,18 @@ if W <= 1.5 or H <= 1.5:
     ap.error("--area: each side must exceed 1.5 m (the paths keep 0.5 m margins)")
 if a.odom_hz != 50.0 and not a.async_:
     ap.error("--odom-hz needs --async")
+if a.rr_hz and not a.async_:
+    ap.error("--rr-hz needs --async")
+if a.lag and not a.rr_hz:
+    ap.error("--lag needs --rr-hz (the lines are then sorted by time)")
+dead = None
+if a.dead:
+    try:
+        dead = tuple(float(v) for v in a.dead.split(","))
+        assert len(dead) == 3
+    except (ValueError, AssertionError):
+        ap.error(f"--dead must be reader,from,to, not '{a.dead}'")
+slip_times = sorted(rng.uniform(0.1, 0.9) * a.duration for _ in range(a.slips))
 
 def layout(name):
     if name == "ring8_60":
@@ -101,16 +125,30 @@ gt, wp = [], waypoints()
 goal = next(wp)
 t = 0.0
 kid_done = False
+next_poll, poll_k, polls = 0.01, 0, []  # --rr-hz: polls sorted into the odometry by time
 
 def wrap(v):
     while v > math.pi: v -= 2 * math.pi
     while v <= -math.pi: v += 2 * math.pi
     return v
 
-def reads(px, py, pth, r):
+def ghost(rx, ry):
+    """A real tag 0.2-0.6 m from the reader's centre, or None."""
+    for _ in range(20):
+        d, b = rng.uniform(0.2, 0.6), rng.uniform(-math.pi, math.pi)
+        cand = grid.get((int((rx + d * math.cos(b)) / cell), int((ry + d * math.sin(b)) / cell)), [])
+        near = [t for t in cand if 0.2 <= math.hypot(t[1] - rx, t[2] - ry) <= 0.6]
+        if near:
+            return rng.choice(near)[0]
+    return None
+
+def reads(px, py, pth, r, T=0.0):
     c, s = math.cos(pth), math.sin(pth)
     rx, ry = px + c * r[1] - s * r[2], py + s * r[1] + c * r[2]
+    if dead and readers.index(r) == int(dead[0]) and dead[1] <= T <= dead[2]:
+        return []
     out = []
+    g = ghost(rx, ry) if a.ghost and rng.random() < a.ghost else None
     for i in range(int(rx / cell) - 1, int(rx / cell) + 2):
         for j in range(int(ry / cell) - 1, int(ry / cell) + 2):
             for tg in grid.get((i, j), []):
@@ -118,6 +156,8 @@ def reads(px, py, pth, r):
                 ex, ey = c * dx + s * dy, -s * dx + c * dy
                 if abs(ex) < r[3] and abs(ey) < r[4]:
                     out.append(tg[0])
+    if g and g not in out:
+        out.append(g)
     return out
 
 def fmt(v):
@@ -126,10 +166,10 @@ def fmt(v):
 while t <= a.duration + 1e-9:
     T = a.t0 + t
     gt.append((T, x, y, th))
-    lines.append(f"odom {T:.4f} {fmt(ox)} {fmt(oy)} {fmt(wrap(oth))}")
+    lines.append(f"odom {T + a.lag:.4f} {fmt(ox)} {fmt(oy)} {fmt(wrap(oth))}")
     if not a.async_:
         for r in readers:
-            ids = reads(x, y, th, r)
+            ids = reads(x, y, th, r, t)
             lines.append(f"rfid {T:.4f} {r[0]} " + " ".join(ids))
     # move for dt_odom: omni robot heads to the goal in the world frame
     dx, dy = goal[0] - x, goal[1] - y
@@ -143,7 +183,18 @@ while t <= a.duration + 1e-9:
     c, s = math.cos(th), math.sin(th)
     bx, by = c * wx + s * wy, -s * wx + c * wy  # body-frame increment
     bth = a.omega * dt_odom
-    if a.async_:
+    if a.async_ and a.rr_hz:
+        # one reader after the other, each at rr_hz, 2 ms of jitter
+        period = 1.0 / (a.rr_hz * len(readers))
+        while next_poll < t + dt_odom:
+            f = (next_poll - t) / dt_odom
+            tk = next_poll + rng.uniform(-0.002, 0.002)
+            r = readers[poll_k % len(readers)]
+            ids = reads(x + wx * f, y + wy * f, th + bth * f, r, next_poll)
+            polls.append((a.t0 + tk, f"rfid {a.t0 + tk:.4f} {r[0]} " + " ".join(ids)))
+            poll_k += 1
+            next_poll += period
+    elif a.async_:
         # readers polled round robin between odom samples, each at its own t
         for k, r in enumerate(readers):
             tk = t + dt_odom * (k + 0.5) / len(readers)
@@ -156,6 +207,10 @@ while t <= a.duration + 1e-9:
     nx = bx + rng.gauss(0, a.sigma_xy * math.sqrt(L))
     ny = by + rng.gauss(0, a.sigma_xy * math.sqrt(L))
     nth = bth + rng.gauss(0, a.sigma_phi * math.sqrt(L))
+    nx, ny, nth = nx * a.scale, ny * a.scale, nth + a.drift * math.hypot(bx, by)
+    while slip_times and slip_times[0] < t + dt_odom:
+        slip_times.pop(0)
+        nx += rng.uniform(0.1, 0.3)
     co, so = math.cos(oth), math.sin(oth)
     ox, oy, oth = ox + co * nx - so * ny, oy + so * nx + co * ny, oth + nth
     t += dt_odom
@@ -163,9 +218,16 @@ while t <= a.duration + 1e-9:
         kid_done = True
         # carried for 2 s: no odometry, no reads; put down elsewhere
         t += 2.0
+        while a.rr_hz and next_poll < t:  # no polls while carried
+            next_poll += 1.0 / (a.rr_hz * len(readers))
         x, y, th = rng.uniform(0.5, W - 0.5), rng.uniform(0.5, H - 0.5), th
         goal = next(wp)
 
+if polls:  # the odometry lines (stamped + lag) and the polls in time order
+    head = [l for l in lines if not l.startswith("odom ")]
+    timed = [(float(l.split()[1]), l) for l in lines if l.startswith("odom ")] + polls
+    timed.sort(key=lambda p: p[0])
+    lines = head + [l for _, l in timed]
 with open(a.out + ".txt", "w") as f:
     f.write("\n".join(lines) + "\n")
 with open(a.out + ".gt.tum", "w") as f:

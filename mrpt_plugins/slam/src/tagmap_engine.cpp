@@ -96,7 +96,9 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         for (const auto& r : reads_) {
             double b = 0;
             ll += map_.robotReadsLogLikelihood(r, pose, c, s, &b);
-            base += b;
+            // The kidnap check's terms are in the RFID step model's units:
+            // range-and-bearing ones enter rescaled ([kidnap] rb_loglik_scale).
+            base += r.rangeBearing ? cfg_.kidnap.rb_loglik_scale * b : b;
         }
         if (i < baseLogLik_.size()) baseLogLik_[i] = base;
         return ll;
@@ -250,23 +252,16 @@ TStepEvidence CTagMapEngine::stepEvidence() const {
     // the best particle, the same callable on each read alone.
     TStepEvidence e;
     e.t = t_;
-    // Range-and-bearing terms are rescaled to the detector's units; a step
-    // with both kinds takes the read-weighted mean of the scales.
-    const double rbScale = cfg_.kidnap.rb_loglik_scale;
-    double scaleSum = 0;
-    for (const auto& r : reads_) {
-        e.reads += r.reads.size();
-        scaleSum += double(r.reads.size()) * (r.rangeBearing ? rbScale : 1.0);
-    }
+    for (const auto& r : reads_) e.reads += r.reads.size();
     // The base model's terms (the mixture off): the mixture caps a read's
     // cost at log(eps) + floor, below any drop the detector could see.
     const auto& ll = baseLogLik_;
     if (e.reads == 0 || pf_.stepLogLik().empty() || ll.size() != pf_.m_particles.size())
         return e;
     const size_t best = size_t(std::max_element(ll.begin(), ll.end()) - ll.begin());
-    const double K = double(e.reads), scale = scaleSum / K;
-    e.bestMeanLogLik = scale * ll[best] / K;
-    e.meanLogEvidence = scale * pf_.stepLogEvidence(ll) / K;
+    const double K = double(e.reads);
+    e.bestMeanLogLik = ll[best] / K;
+    e.meanLogEvidence = pf_.stepLogEvidence(ll) / K;
     const auto& p = pf_.m_particles[best].d;
     const mrpt::math::TPose2D pose(p.x(), p.y(), p.phi());
     for (const auto& r : reads_) {
@@ -275,7 +270,7 @@ TStepEvidence CTagMapEngine::stepEvidence() const {
             one.reads.assign(1, rd);
             double b = 0;
             map_.robotReadsLogLikelihood(one, pose, p.phi_cos(), p.phi_sin(), &b);
-            if (r.rangeBearing) b *= rbScale;
+            if (r.rangeBearing) b *= cfg_.kidnap.rb_loglik_scale;
             if (b >= cfg_.kidnap.collapse_loglik)
                 e.agreeing++;
             else if (rd.id)

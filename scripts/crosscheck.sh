@@ -3,8 +3,8 @@
 # scripts/crosscheck/textlog_sim.py (not rfir-sim), imported with rfir-import,
 # run with the stock INIs of PF-SLAM, PS-SLAM and FastSLAM, scored with
 # rfir-eval (dead reckoning from the rawlog's odometry). Prints one markdown
-# row per scenario: mean robot / tag error in mm over the seeds, and the
-# kidnap resets summed over the seeds.
+# row per scenario: mean robot / tag error in mm over the seeds (PF-SLAM also
+# after rfir-slam --smooth), and the kidnap resets summed over the seeds.
 #
 #   bash scripts/crosscheck.sh [--seeds N] [--out DIR] [--config-dir DIR] [--scenarios a,b]
 # --config-dir defaults to config_ini (the stock INIs as in the source tree);
@@ -57,8 +57,8 @@ for sc in $ORDER; do
   [ -n "${SC[$sc]:-}" ] || { echo "crosscheck.sh: unknown scenario '$sc' (known: ${!SC[*]})" >&2; exit 2; }
 done
 mkdir -p "$OUT"
-echo "| scenario | PF-SLAM | PS-SLAM | FastSLAM | dead reckoning | resets PF / PS |"
-echo "| --- | --- | --- | --- | --- | --- |"
+echo "| scenario | PF-SLAM | PS-SLAM | FastSLAM | PF-SLAM --smooth | dead reckoning | resets PF / PS |"
+echo "| --- | --- | --- | --- | --- | --- | --- |"
 for sc in $ORDER; do
   res="$OUT/$sc.results"; : > "$res"; : > "$OUT/$sc.resets"
   for s in $(seq 1 "$SEEDS"); do
@@ -67,14 +67,19 @@ for sc in $ORDER; do
     python3 scripts/crosscheck/textlog_sim.py --out "$n" --seed "$s" ${SC[$sc]} >/dev/null
     "$BIN/rfir-import" -q --input "$n.txt" --output "$n.rawlog"
     for m in pf ps fastslam; do
+      # PF-SLAM also with the offline smoother (its filter outputs are the same)
+      sm=(); [ "$m" = pf ] && sm=(--smooth)
       "$BIN/rfir-slam" --rawlog "$n.rawlog" --method "$m" --config "$CFGDIR/slam_$m.ini" \
-        --seed "$s" --out-dir "${n}_$m" > "${n}_$m.log" 2>&1 \
+        --seed "$s" --out-dir "${n}_$m" "${sm[@]}" > "${n}_$m.log" 2>&1 \
         || { echo "crosscheck.sh: rfir-slam failed, see ${n}_$m.log" >&2; exit 1; }
       # dead reckoning once per log, with pf
       dr=(); [ "$m" = pf ] || dr=(--no-odometry)
       "$BIN/rfir-eval" --json-only "${dr[@]}" --rawlog "$n.rawlog" --path "${n}_$m/path.tum" \
         --gt-path "$n.gt.tum" --map "${n}_$m/map.txt" --gt-map "$n.gt_map.txt" \
         | sed "s/^/$m /" >> "$res"
+      [ "$m" = pf ] && "$BIN/rfir-eval" --json-only --no-odometry --rawlog "$n.rawlog" \
+        --path "${n}_pf/path_smoothed.tum" --gt-path "$n.gt.tum" \
+        --map "${n}_pf/map_smoothed.txt" --gt-map "$n.gt_map.txt" | sed "s/^/smooth /" >> "$res"
       python3 -c 'import json,sys; print(sys.argv[1], json.load(open(sys.argv[2]))["kidnap_resets"])' \
         "$m" "${n}_$m/stats.json" >> "$OUT/$sc.resets"
     done
@@ -95,7 +100,8 @@ def cell(k):
     v = acc[k]; r = 1e3 * sum(a for a, _ in v) / len(v)
     if v[0][1] is None: return "%.1f" % r
     return "%.1f / %.1f" % (r, 1e3 * sum(b for _, b in v) / len(v))
-print("| %s | %s | %s | %s | %s | %d / %d |" % (sys.argv[1], cell("pf"), cell("ps"), cell("fastslam"),
-                                          cell("dr"), resets.get("pf", 0), resets.get("ps", 0)))
+print("| %s | %s | %s | %s | %s | %s | %d / %d |" % (sys.argv[1], cell("pf"), cell("ps"), cell("fastslam"),
+                                               cell("smooth"), cell("dr"), resets.get("pf", 0),
+                                               resets.get("ps", 0)))
 PY
 done

@@ -42,6 +42,23 @@ struct TGraph {
     std::vector<bool> moved;  //!< moved[k]: an odometry record ends at step k
 };
 
+/** Distinct tags read again after `minTravel` m of odometry path since
+ * their previous read. */
+size_t closures(const TGraph& g, double minTravel) {
+    std::vector<double> travel(g.K + 1, 0.0);
+    for (size_t k = 0; k < g.K; k++)
+        travel[k + 1] = travel[k] + std::hypot(g.u[k].x(), g.u[k].y());
+    std::vector<double> last(g.tagIds.size(), -1);
+    std::vector<bool> closed(g.tagIds.size(), false);
+    for (const auto& p : g.polls)  // in step order
+        for (size_t j : p.tags) {
+            const double d = travel[p.k + 1];
+            if (last[j] >= 0 && d - last[j] >= minTravel) closed[j] = true;
+            last[j] = d;
+        }
+    return size_t(std::count(closed.begin(), closed.end(), true));
+}
+
 /** 1 / std (m, rad) of the tie between a step without odometry and the one before. */
 constexpr double kSameRecordTie = 1e4;
 
@@ -253,9 +270,17 @@ TGraphSmootherResult smoothRunCeres(const std::vector<TSlamInput>& inputs,
     // model with negative information, the odometry bias held: freed from
     // the filter's path it ran off to a wrong scale (+0.1 on the 300 mm
     // loop). Last the bias too; each solve picks the unread tags anew.
+    res.closures = closures(g, params.options.closure_min_travel);
+    res.biasEstimated = res.closures >= size_t(params.options.bias_min_closures) &&
+                        (params.options.drift_prior_std > 0 ||
+                         params.options.scale_prior_std > 0);
+    TGraphSmootherParams solveParams = params;  // the bias held if not estimated
+    if (!res.biasEstimated)
+        solveParams.options.drift_prior_std = solveParams.options.scale_prior_std = 0;
     for (int stage = 0; stage < 3; stage++) {
         ceres::Problem pb;
-        std::tie(res.reads, res.negatives) = addFactors(pb, g, s0, bias, params, stage);
+        std::tie(res.reads, res.negatives) =
+            addFactors(pb, g, s0, bias, solveParams, stage);
         ceres::Solver::Options so;
         so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
         so.max_num_iterations = params.options.max_iterations;

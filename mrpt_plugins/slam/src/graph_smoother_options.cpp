@@ -22,7 +22,7 @@ void TGraphSmootherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBa
         {"solver", "odometry_loss", "odometry_loss_scale", "read_loss", "read_loss_scale",
          "read_tail_std_factor", "flat_min_half_size", "read_edge_smoothing",
          "detection_probability", "scale_prior_std", "drift_prior_std", "odometry_a3",
-         "kidnap_window", "max_iterations"});
+         "kidnap_window", "max_iterations", "bias_min_closures", "closure_min_travel"});
     const std::vector<std::string> solvers = {"ceres", "lm"};
     solver = solvers[sec.getEnum("solver", solvers, indexOf(solvers, solver))];
     odometry_loss =
@@ -46,6 +46,10 @@ void TGraphSmootherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBa
     odometry_a3 = sec.getDouble("odometry_a3", odometry_a3, R::closed(-1, M_PI));
     kidnap_window = sec.getDouble("kidnap_window", kidnap_window, R::closed(0, 1e6));
     max_iterations = int(sec.getInt("max_iterations", max_iterations, 1, 100000));
+    bias_min_closures =
+        int(sec.getInt("bias_min_closures", bias_min_closures, 0, 1000000000));
+    closure_min_travel =
+        sec.getDouble("closure_min_travel", closure_min_travel, R::closed(0, 1e6));
 }
 
 void TGraphSmootherOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -72,5 +76,9 @@ void TGraphSmootherOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "kidnap_window", kidnap_window, -1, -1,
             "s before a kidnap reset searched for the kidnapping");
     c.write(s, "max_iterations", max_iterations, -1, -1, "solver iterations");
+    c.write(s, "bias_min_closures", bias_min_closures, -1, -1,
+            "tags read again after closure_min_travel before scale and drift are estimated");
+    c.write(s, "closure_min_travel", closure_min_travel, -1, -1,
+            "odometry path [m] between two reads of a tag that makes a closure");
 }
 }  // namespace rfir::slam

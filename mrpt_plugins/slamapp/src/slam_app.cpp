@@ -294,10 +294,16 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
         logStream(a) << "rfir-slam: smoother cut the odometry at t = " << std::fixed
                      << std::setprecision(2) << t << " s (kidnapping)\n"
                      << std::defaultfloat;
-    logStream(a) << std::setprecision(6)
-                 << "rfir-slam: odometry systematic error: translation scale "
-                 << res.odometryScale << ", heading drift " << res.headingDriftPerMetre
-                 << " rad/m\n";
+    if (p.options.solver == "ceres" && !res.biasEstimated)
+        logStream(a) << "rfir-slam: odometry systematic error not estimated: "
+                     << res.closures << " tags read again after "
+                     << p.options.closure_min_travel << " m of path (bias_min_closures "
+                     << p.options.bias_min_closures << ")\n";
+    else
+        logStream(a) << std::setprecision(6)
+                     << "rfir-slam: odometry systematic error: translation scale "
+                     << res.odometryScale << ", heading drift " << res.headingDriftPerMetre
+                     << " rad/m\n";
     stats = TJson();
     stats["solver"] = p.options.solver;
     stats["iterations"] = res.iterations;
@@ -306,6 +312,8 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
     stats["negative_reads"] = res.negatives;
     stats["odometry_scale"] = printed(res.odometryScale);
     stats["heading_drift_rad_per_m"] = printed(res.headingDriftPerMetre);
+    stats["closures"] = res.closures;  // tags read again after closure_min_travel
+    stats["bias_estimated"] = res.biasEstimated;
     stats["odometry_cut_times_s"] = printed(res.cutTimes, "%.6g");
     return writeAndScore(a, out, truth, res.run, "_smoothed",
                          rfir::slam::methodName(cfg.slam.method) + " smoothed",

@@ -45,6 +45,10 @@ struct TGraphSmootherResult {
     /** Estimated odometry systematic error: true translation = (1 + scale) x
      * odometry's, true heading change = odometry's + drift x distance. */
     double odometryScale = 0, headingDriftPerMetre = 0;
+    /** Tags read again after closure_min_travel; the bias is estimated only
+     * if there are at least bias_min_closures of them (biasEstimated). */
+    size_t closures = 0;
+    bool biasEstimated = false;
     /** Times (s) of the odometry increments cut as kidnappings. */
     std::vector<double> cutTimes;
 };

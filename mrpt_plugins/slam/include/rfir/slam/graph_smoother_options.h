@@ -35,6 +35,14 @@ struct TGraphSmootherOptions : public mrpt::config::CLoadableOptions {
      * 60 mm, +1 to +10 % with flat ones at 300 mm; docs/slam.md). */
     double scale_prior_std = 0;
     double drift_prior_std = 0.02;  //!< rad/m
+    /** The scale and the drift are estimated only if at least this many
+     * distinct tags are read again after `closure_min_travel` m of odometry
+     * path since their previous read: an error per metre shows only in such
+     * closures. Without them (a short run across a big floor) the path and
+     * its tags bend together at no cost, and freed the drift ran off
+     * (docs/slam.md, "Offline smoothing"). 0: always estimated. */
+    int bias_min_closures = 20;
+    double closure_min_travel = 5.0;  //!< m
     /** Heading std per metre of the odometry factors (a3 of MRPT's model;
      * negative: [motion] a3). The filters' a3 may be wider, to keep a
      * drifting odometry inside the particle cloud between revisits; the

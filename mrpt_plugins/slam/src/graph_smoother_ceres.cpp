@@ -36,9 +36,9 @@ struct TGraph {
     std::vector<TPoll> polls;
     std::vector<std::string> tagIds;
     std::unordered_map<std::string, size_t> tagIndex;
-    std::vector<TPose> x;   //!< poses (heading unwrapped)
-    std::vector<TTag> m;    //!< tags
-    std::vector<bool> cut;  //!< cut[k]: no odometry factor into pose k
+    std::vector<TPose> x;     //!< poses (heading unwrapped)
+    std::vector<TTag> m;      //!< tags
+    std::vector<bool> cut;    //!< cut[k]: no odometry factor into pose k
     std::vector<bool> moved;  //!< moved[k]: an odometry record ends at step k
 };
 
@@ -271,9 +271,9 @@ TGraphSmootherResult smoothRunCeres(const std::vector<TSlamInput>& inputs,
     // the filter's path it ran off to a wrong scale (+0.1 on the 300 mm
     // loop). Last the bias too; each solve picks the unread tags anew.
     res.closures = closures(g, params.options.closure_min_travel);
-    res.biasEstimated = res.closures >= size_t(params.options.bias_min_closures) &&
-                        (params.options.drift_prior_std > 0 ||
-                         params.options.scale_prior_std > 0);
+    res.biasEstimated =
+        res.closures >= size_t(params.options.bias_min_closures) &&
+        (params.options.drift_prior_std > 0 || params.options.scale_prior_std > 0);
     TGraphSmootherParams solveParams = params;  // the bias held if not estimated
     if (!res.biasEstimated)
         solveParams.options.drift_prior_std = solveParams.options.scale_prior_std = 0;

@@ -76,8 +76,9 @@ void TGraphSmootherOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "kidnap_window", kidnap_window, -1, -1,
             "s before a kidnap reset searched for the kidnapping");
     c.write(s, "max_iterations", max_iterations, -1, -1, "solver iterations");
-    c.write(s, "bias_min_closures", bias_min_closures, -1, -1,
-            "tags read again after closure_min_travel before scale and drift are estimated");
+    c.write(
+        s, "bias_min_closures", bias_min_closures, -1, -1,
+        "tags read again after closure_min_travel before scale and drift are estimated");
     c.write(s, "closure_min_travel", closure_min_travel, -1, -1,
             "odometry path [m] between two reads of a tag that makes a closure");
 }

@@ -302,8 +302,8 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
     else
         logStream(a) << std::setprecision(6)
                      << "rfir-slam: odometry systematic error: translation scale "
-                     << res.odometryScale << ", heading drift " << res.headingDriftPerMetre
-                     << " rad/m\n";
+                     << res.odometryScale << ", heading drift "
+                     << res.headingDriftPerMetre << " rad/m\n";
     stats = TJson();
     stats["solver"] = p.options.solver;
     stats["iterations"] = res.iterations;

@@ -23,7 +23,15 @@ ap.add_argument("--wrong-code", type=float, default=0.0, help="share of readings
 ap.add_argument("--volt-outliers", type=float, default=0.0, help="share of wild voltages (0-4 V)")
 a = ap.parse_args()
 rng = random.Random(a.seed)
-W, H = (float(v) for v in a.area.split("x"))
+try:
+    W, H = (float(v) for v in a.area.split("x"))
+except ValueError:
+    ap.error(f"--area must be W x H in metres, e.g. 3.2x2.4, not '{a.area}'")
+for name in ("pitch", "laps", "speed"):
+    if not getattr(a, name) > 0:
+        ap.error(f"--{name} must be positive")
+if W <= 1.0 or H <= 1.0:
+    ap.error("--area: each side must exceed 1 m (the loop keeps 0.4 m margins)")
 C2, C1, C0, RADIUS = -32.7, 2.855, 1.81997, 0.28  # eq. 5.3 in metres, its zero
 
 pairs = [f"{i}{j}" for i in range(5, 10) for j in range(i + 1, 10)]
@@ -38,6 +46,8 @@ while y < H:
         x += a.pitch
     y += a.pitch
 true_pos = [e[1:3] for e in emitters]
+if a.failed + (a.moved > 0) > len(emitters):
+    ap.error(f"--failed and --moved need more than the {len(emitters)} emitters")
 idx = list(range(len(emitters)))
 rng.shuffle(idx)
 failed = set(idx[:a.failed])
@@ -91,23 +101,22 @@ while gi < len(route):
         gi += 1
     if gi == len(route):
         break
-    if True:
-        goal = route[gi]
-        dx, dy = goal[0] - x, goal[1] - y
-        d = math.hypot(dx, dy)
-        turn = wrap(math.atan2(dy, dx) - th)
-        if abs(turn) > 0.05:  # turn in place at the corner, 1 rad/s
-            dth, step = max(-0.1, min(0.1, turn)), 0.0
-        else:
-            dth, step = turn, min(a.speed * dt, d)
-        th = wrap(th + dth)
-        x, y = x + step * math.cos(th), y + step * math.sin(th)
-        L = step + 0.1 * abs(dth)
-        ns = step + rng.gauss(0, 0.0186 * math.sqrt(L))
-        nth = dth + rng.gauss(0, 0.0093 * math.sqrt(L))
-        oth += nth
-        ox, oy = ox + ns * math.cos(oth), oy + ns * math.sin(oth)
-        t += dt
+    goal = route[gi]
+    dx, dy = goal[0] - x, goal[1] - y
+    d = math.hypot(dx, dy)
+    turn = wrap(math.atan2(dy, dx) - th)
+    if abs(turn) > 0.05:  # turn in place at the corner, 1 rad/s
+        dth, step = max(-0.1, min(0.1, turn)), 0.0
+    else:
+        dth, step = turn, min(a.speed * dt, d)
+    th = wrap(th + dth)
+    x, y = x + step * math.cos(th), y + step * math.sin(th)
+    L = step + 0.1 * abs(dth)
+    ns = step + rng.gauss(0, 0.0186 * math.sqrt(L))
+    nth = dth + rng.gauss(0, 0.0093 * math.sqrt(L))
+    oth += nth
+    ox, oy = ox + ns * math.cos(oth), oy + ns * math.sin(oth)
+    t += dt
 
 with open(a.out + ".txt", "w") as f:
     f.write("\n".join(lines) + "\n")

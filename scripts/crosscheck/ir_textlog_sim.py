@@ -10,6 +10,8 @@ the moved emitter where it was) and NAME.gt.tum. Standard library only; see
 scripts/crosscheck_ir.sh."""
 import argparse, math, random
 
+import simargs
+
 ap = argparse.ArgumentParser()
 ap.add_argument("--out", required=True, help="output prefix")
 ap.add_argument("--seed", type=int, default=1)
@@ -23,13 +25,8 @@ ap.add_argument("--wrong-code", type=float, default=0.0, help="share of readings
 ap.add_argument("--volt-outliers", type=float, default=0.0, help="share of wild voltages (0-4 V)")
 a = ap.parse_args()
 rng = random.Random(a.seed)
-try:
-    W, H = (float(v) for v in a.area.split("x"))
-except ValueError:
-    ap.error(f"--area must be W x H in metres, e.g. 3.2x2.4, not '{a.area}'")
-for name in ("pitch", "laps", "speed"):
-    if not getattr(a, name) > 0:
-        ap.error(f"--{name} must be positive")
+W, H = simargs.area(ap, a.area, "3.2x2.4")
+simargs.positive(ap, a, ("pitch", "laps", "speed"))
 if W <= 1.0 or H <= 1.0:
     ap.error("--area: each side must exceed 1 m (the loop keeps 0.4 m margins)")
 C2, C1, C0, RADIUS = -32.7, 2.855, 1.81997, 0.28  # eq. 5.3 in metres, its zero

@@ -7,6 +7,8 @@ Writes NAME.txt (textlog 1), NAME.gt.tum and NAME.gt_map.txt. Standard
 library only; see scripts/crosscheck.sh."""
 import argparse, math, random
 
+import simargs
+
 ap = argparse.ArgumentParser()
 ap.add_argument("--out", required=True, help="output prefix")
 ap.add_argument("--layout", default="ring8_60",
@@ -42,13 +44,8 @@ ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--start", default="0.5,0.5,0", help="start pose x,y,phi (the log's start record)")
 a = ap.parse_args()
 rng = random.Random(a.seed)
-try:
-    W, H = (float(v) for v in a.area.split("x"))
-except ValueError:
-    ap.error(f"--area must be W x H in metres, e.g. 3x3, not '{a.area}'")
-for name in ("density", "duration", "speed", "odom_hz"):
-    if not getattr(a, name) > 0:
-        ap.error(f"--{name.replace('_', '-')} must be positive")
+W, H = simargs.area(ap, a.area, "3x3")
+simargs.positive(ap, a, ("density", "duration", "speed", "odom_hz"))
 if W <= 1.5 or H <= 1.5:
     ap.error("--area: each side must exceed 1.5 m (the paths keep 0.5 m margins)")
 if a.odom_hz != 50.0 and not a.async_:

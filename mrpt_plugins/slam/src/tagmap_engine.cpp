@@ -86,6 +86,13 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     /** After the weighing: the kidnap monitor's step, sensor resetting. */
     void checkKidnap();
     TStepEvidence stepEvidence() const;
+    /** A base term of `r`'s reads in the kidnap check's units, those of the
+     * RFID step model: range-and-bearing terms rescaled ([kidnap]
+     * rb_loglik_scale), the one place both the step's sum and each read's
+     * term go through. */
+    double kidnapUnits(const CRFIDTagParticleMap::TRobotReads& r, double base) const {
+        return r.rangeBearing ? cfg_.kidnap.rb_loglik_scale * base : base;
+    }
     /** Particle i's log-likelihood: the sum computeObservationLikelihood
      * gives over obs_ (same terms, same order), from reads resolved once. */
     double weigh(size_t i, const CParticlePose2D& p) const {
@@ -96,9 +103,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         for (const auto& r : reads_) {
             double b = 0;
             ll += map_.robotReadsLogLikelihood(r, pose, c, s, &b);
-            // The kidnap check's terms are in the RFID step model's units:
-            // range-and-bearing ones enter rescaled ([kidnap] rb_loglik_scale).
-            base += r.rangeBearing ? cfg_.kidnap.rb_loglik_scale * b : b;
+            base += kidnapUnits(r, b);
         }
         if (i < baseLogLik_.size()) baseLogLik_[i] = base;
         return ll;
@@ -270,7 +275,7 @@ TStepEvidence CTagMapEngine::stepEvidence() const {
             one.reads.assign(1, rd);
             double b = 0;
             map_.robotReadsLogLikelihood(one, pose, p.phi_cos(), p.phi_sin(), &b);
-            if (r.rangeBearing) b *= cfg_.kidnap.rb_loglik_scale;
+            b = kidnapUnits(r, b);
             if (b >= cfg_.kidnap.collapse_loglik)
                 e.agreeing++;
             else if (rd.id)

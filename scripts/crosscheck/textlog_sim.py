@@ -50,6 +50,8 @@ if W <= 1.5 or H <= 1.5:
     ap.error("--area: each side must exceed 1.5 m (the paths keep 0.5 m margins)")
 if a.odom_hz != 50.0 and not a.async_:
     ap.error("--odom-hz needs --async")
+if a.rr_hz < 0 or a.lag < 0 or a.ghost < 0 or a.slips < 0:
+    ap.error("--rr-hz, --lag, --ghost and --slips must not be negative")
 if a.rr_hz and not a.async_:
     ap.error("--rr-hz needs --async")
 if a.lag and not a.rr_hz:
@@ -77,6 +79,8 @@ def layout(name):
     raise AssertionError(name)  # argparse's choices
 
 readers = layout(a.layout)
+if dead and not (dead[0] == int(dead[0]) and 0 <= int(dead[0]) < len(readers)):
+    ap.error(f"--dead: reader index {dead[0]:g} is not one of the layout's 0-{len(readers) - 1}")
 pitch = 1 / math.sqrt(a.density)
 tags = []
 n = 0

@@ -39,12 +39,13 @@ double CIREmitterMap::verticalDistance(const rfir::ir::TEmitter& e,
 }
 
 std::optional<size_t> CIREmitterMap::associate(const CObservationIRSignals::TReading& r,
-                                               const mrpt::math::TPose2D& robot) const {
+                                               const mrpt::math::TPose2D& robot,
+                                               TAssociation how) const {
     if (r.codes.empty()) return std::nullopt;
     const auto* cand = m_emitters.candidates(rfir::ir::emitterIdFromCodes(r.codes));
     if (!cand) return std::nullopt;
     if (cand->size() == 1) return (*cand)[0];
-    if (likelihoodOptions.association == TAssociation::Particle)
+    if (how == TAssociation::Particle)
         return rfir::ir::mostLikelyEmitter(*cand, m_emitters.emitters(),
                                            rfir::ir::receiverInWorld(robot, r.receiver));
     if (!m_reference) return std::nullopt;
@@ -81,8 +82,9 @@ bool CIREmitterMap::countsAsMiss(const CObservationIRSignals::TReading& r,
 }
 
 std::optional<CIREmitterMap::TReadingTerm> CIREmitterMap::readingTerm(
-    const CObservationIRSignals::TReading& r, const mrpt::math::TPose2D& robot) const {
-    const auto idx = associate(r, robot);
+    const CObservationIRSignals::TReading& r, const mrpt::math::TPose2D& robot,
+    TAssociation how) const {
+    const auto idx = associate(r, robot, how);
     if (!idx) return std::nullopt;
     const auto& e = m_emitters.emitters()[*idx];
     return TReadingTerm{*idx,

@@ -93,8 +93,8 @@ mrpt::poses::CPose2D CIRLocalizer::estimate() const {
 }
 
 CObservationIRSignals::Ptr CIRLocalizer::prepare(const CObservationIRSignals& in,
-                                                 TLocalizerStep& info,
-                                                 TSeen& seen) const {
+                                                 TLocalizerStep& info, TSeen& seen,
+                                                 CObservationIRSignals& early) const {
     auto out = CObservationIRSignals::Create();
     out->timestamp = in.timestamp;
     out->sensorLabel = in.sensorLabel;
@@ -128,8 +128,10 @@ CObservationIRSignals::Ptr CIRLocalizer::prepare(const CObservationIRSignals& in
             continue;
         }
         // Before the first unique ID the thesis cannot attribute repeated IDs.
-        if (!m_started && !m_map->emitters().isUnambiguous(id) && !earlyRepeated)
+        if (!m_started && !m_map->emitters().isUnambiguous(id) && !earlyRepeated) {
+            early.readings.push_back(r);
             continue;
+        }
         out->readings.push_back(r);
     }
     return out;
@@ -153,8 +155,13 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
     TLocalizerStep info;
     CObservationIRSignals::Ptr obs;
     TSeen seen;
-    if (ir) obs = prepare(*ir, info, seen);
-    if (incr) predict(*incr);
+    auto early = CObservationIRSignals::Create();
+    if (ir) obs = prepare(*ir, info, seen, *early);
+    if (incr) {
+        predict(*incr);
+        m_odometry = m_odometry + *incr;
+        m_path += std::hypot(incr->x(), incr->y());
+    }
     const bool byEstimate = m_map->likelihoodOptions.association ==
                             rfir::maps::CIREmitterMap::TAssociation::Estimate;
     // Eq. 5.1 is evaluated against the predicted estimate, once per step.
@@ -182,9 +189,10 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
         info.resetParticles = sensorReset(*obs, true);
         m_monitor.clearAfterReset();
         m_recovering = true;
-    } else if (unique && !m_started && m_params.startFromReading)
+    } else if (unique && !m_started && m_params.startFromReading) {
         info.resetParticles = sensorReset(*obs, true);
-    else if (unique && m_params.sensorResetting)
+        info.historyReadings = weighByHistory();
+    } else if (unique && m_params.sensorResetting)
         info.resetParticles = sensorReset(*obs, false);
     if (obs && !obs->readings.empty()) {
         mrpt::obs::CSensoryFrame sf;
@@ -197,6 +205,7 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
     }
     info.justStarted = unique && !m_started;
     m_started = m_started || unique;
+    if (!m_started) remember(early);
     info.started = m_started;
     noteSilence(ir, t, seen);
     if (m_started && !seen.empty()) checkEmitters(seen);

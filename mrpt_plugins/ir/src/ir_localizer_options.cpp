@@ -57,22 +57,35 @@ void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
                                           const std::string& prefix) {
     const std::string s = prefix + "localization";
     const rfir::ini::CIniSection s_sec(c, s,
-                                       {"num_particles",       "init_area",
-                                        "init_margin",         "start_from_reading",
-                                        "sensor_resetting",    "reset_min_fraction",
-                                        "reset_ratio",         "reset_distance_sigma",
-                                        "reset_view_margin",   "repeated_before_unique",
-                                        "association_max_std", "ess_threshold",
-                                        "resampling",          "decode_raw",
-                                        "gate_max_std",        "gate_loglik",
-                                        "gate_min_fraction",   "lost_min_readings",
-                                        "lost_min_ids",        "emitter_check_radius",
-                                        "emitter_min_checks",  "inconsistent_weight"});
+                                       {"num_particles",
+                                        "init_area",
+                                        "init_margin",
+                                        "start_from_reading",
+                                        "start_history",
+                                        "sensor_resetting",
+                                        "reset_min_fraction",
+                                        "reset_ratio",
+                                        "reset_distance_sigma",
+                                        "reset_view_margin",
+                                        "repeated_before_unique",
+                                        "association_max_std",
+                                        "ess_threshold",
+                                        "resampling",
+                                        "decode_raw",
+                                        "gate_max_std",
+                                        "gate_loglik",
+                                        "gate_min_fraction",
+                                        "lost_min_readings",
+                                        "lost_min_ids",
+                                        "emitter_check_radius",
+                                        "emitter_min_checks",
+                                        "inconsistent_weight"});
     numParticles =
         size_t(s_sec.getInt("num_particles", int64_t(numParticles), 1, 10000000));
     readArea(s_sec, *this);
     initMargin = s_sec.getDouble("init_margin", initMargin, R::closed(0, 1000));
     startFromReading = s_sec.getBool("start_from_reading", startFromReading);
+    startHistory = s_sec.getDouble("start_history", startHistory, R::closed(0, 1000));
     sensorResetting = s_sec.getBool("sensor_resetting", sensorResetting);
     resetMinFraction =
         s_sec.getDouble("reset_min_fraction", resetMinFraction, R::closed(0, 1));
@@ -118,6 +131,7 @@ void TLocalizerParams::dumpToTextStream(std::ostream& o) const {
           << "\n";
     o << "init_margin = " << initMargin << "\n"
       << "start_from_reading = " << b(startFromReading) << "\n"
+      << "start_history = " << startHistory << "\n"
       << "sensor_resetting = " << b(sensorResetting) << "\n"
       << "reset_min_fraction = " << resetMinFraction << "\n"
       << "reset_ratio = " << resetRatio << "\n"

@@ -130,6 +130,7 @@ std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& e
     j["raw_windows_decoded"] = res.decoded;
     j["first_unique_time"] =
         res.firstUniqueTime ? printed(*res.firstUniqueTime, "%f") : TJson();
+    j["start_history_readings"] = res.startHistoryReadings;
     j["poses"] = res.path.size();
     j["reset_events"] = res.resetEvents;
     j["reset_particles"] = res.resetParticles;

@@ -66,7 +66,10 @@ TRunResult runLocalization(const TConfig& cfg,
             res.resetEvents++;
             res.resetParticles += info.resetParticles;
         }
-        if (info.justStarted) res.firstUniqueTime = st.t;
+        if (info.justStarted) {
+            res.firstUniqueTime = st.t;
+            res.startHistoryReadings = info.historyReadings;
+        }
         res.gated += info.gated;
         reportLost(info, st.t, res);
         if (info.started) res.path.push_back({st.t, loc->estimate()});

@@ -18,6 +18,7 @@
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 #include <rfir/models/random.h>
 
+#include <deque>
 #include <memory>
 #include <optional>
 
@@ -38,8 +39,8 @@ struct TMotionNoise {
 struct TLocalizerParams : public mrpt::config::CLoadableOptions {
     // [localization]
     /** num_particles (M), the thesis' 1000: in docs/results_ir.md every start
-     * succeeds from 500, but with the first unique ID late (at a corner) the
-     * worst settled error is 116 mm at 500 against 76 mm at 1000. */
+     * succeeds from 500; with the first unique ID late (at a corner) the
+     * worst settled error is 63 mm at 500, 66 mm at 1000, 425 mm at 200. */
     size_t numParticles = 1000;
     /** init_area "x0 y0 x1 y1": initial particle area; empty: the emitters'
      * bounding box grown by init_margin. */
@@ -49,6 +50,13 @@ struct TLocalizerParams : public mrpt::config::CLoadableOptions {
     /** start_from_reading: at the first unique ID, draw every particle from
      * the reading (false: weigh the uniform prior with it, as the thesis). */
     bool startFromReading = true;
+    /** start_history (m): with start_from_reading, the particles drawn at the
+     * first unique ID are weighed by the repeated-ID readings of the last
+     * start_history metres of odometry before it, each particle walked back
+     * along the odometry with the motion noise drawn per interval (one unique
+     * emitter leaves a ring of poses; the path's earlier readings pick the
+     * headings on it). 0: off (the thesis). */
+    double startHistory = 2.0;
     bool sensorResetting = true;       //!< sensor_resetting
     double resetMinFraction = 0.001;   //!< reset_min_fraction: weight in view below it
     double resetRatio = 0.5;           //!< reset_ratio: share of particles redrawn
@@ -90,9 +98,12 @@ struct TLocalizerStep {
     size_t unknownIds = 0;      //!< codes forming an ID absent from the map
     size_t decoded = 0;         //!< raw windows decoded here
     size_t resetParticles = 0;  //!< particles redrawn by sensor resetting
-    size_t gated = 0;           //!< readings inconsistent with the motion prior
-    bool lost = false;          //!< the track was declared lost (and redrawn)
-    std::string lostId;         //!< the unique ID it was redrawn from
+    /** At the first unique ID: the earlier readings that weighed the drawn
+     * particles (start_history). */
+    size_t historyReadings = 0;
+    size_t gated = 0;    //!< readings inconsistent with the motion prior
+    bool lost = false;   //!< the track was declared lost (and redrawn)
+    std::string lostId;  //!< the unique ID it was redrawn from
     /** The particles became confident again (spread under gate_max_std)
      * after a lost-track reset. */
     bool settled = false;
@@ -132,9 +143,11 @@ class CIRLocalizer {
     double positionStd() const;
     /** Receiver and emitter ID (empty: nothing) of every decoded reading. */
     using TSeen = std::vector<std::pair<rfir::obs::TIRReceiver, std::string>>;
+    /** The observation to weigh with; `early` gets the repeated-ID readings
+     * set aside before the first unique ID. */
     rfir::obs::CObservationIRSignals::Ptr prepare(
-        const rfir::obs::CObservationIRSignals& in, TLocalizerStep& info,
-        TSeen& seen) const;
+        const rfir::obs::CObservationIRSignals& in, TLocalizerStep& info, TSeen& seen,
+        rfir::obs::CObservationIRSignals& early) const;
     /** Drops the readings inconsistent with the predicted particles (while
      * they are confident), feeds the emitter health; returns the index of a
      * reading that declares the track lost, if any. The terms it evaluates
@@ -172,6 +185,22 @@ class CIRLocalizer {
     /** The receivers (from the fullest observation) and the IR cadence, for
      * the instants without an IR observation. */
     std::vector<rfir::obs::TIRReceiver> m_receivers;
+    /** Before the first unique ID: the repeated-ID readings not used, with
+     * the odometry pose and path length at their instant (start_history). */
+    struct THistoryEntry {
+        mrpt::poses::CPose2D odometry;
+        double path = 0;
+        rfir::obs::CObservationIRSignals::Ptr obs;
+    };
+    std::deque<THistoryEntry> m_history;
+    mrpt::poses::CPose2D m_odometry;  //!< the increments composed
+    double m_path = 0;                //!< their translations summed (m)
+    /** Keeps the readings prepare() set aside (before the first unique ID). */
+    void remember(rfir::obs::CObservationIRSignals::Ptr early);
+    /** Adds to each particle's log-weight the history's log-likelihood at its
+     * pose walked back along the odometry; then forgets the history. Returns
+     * how many readings weighed. */
+    size_t weighByHistory();
     std::optional<double> m_lastIrT, m_lastCheckT;
     double m_irPeriod = 0;
     void noteSilence(const rfir::obs::CObservationIRSignals* ir, std::optional<double> t,

@@ -61,7 +61,13 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
      * robot pose; nullopt if the reading is skipped (no code, an ID absent from
      * the map, or a repeated ID without a reference under Estimate). */
     std::optional<size_t> associate(const rfir::obs::CObservationIRSignals::TReading& r,
-                                    const mrpt::math::TPose2D& robot) const;
+                                    const mrpt::math::TPose2D& robot) const {
+        return associate(r, robot, likelihoodOptions.association);
+    }
+    /** The same with the association given (not the INI's). */
+    std::optional<size_t> associate(const rfir::obs::CObservationIRSignals::TReading& r,
+                                    const mrpt::math::TPose2D& robot,
+                                    TAssociation how) const;
 
     /** Vertical emitter-receiver distance used for a reading. */
     double verticalDistance(const rfir::ir::TEmitter& e,
@@ -76,7 +82,13 @@ class CIREmitterMap : public mrpt::maps::CMetricMap {
     /** The term of reading r at `robot`; nullopt when it is not attributed. */
     std::optional<TReadingTerm> readingTerm(
         const rfir::obs::CObservationIRSignals::TReading& r,
-        const mrpt::math::TPose2D& robot) const;
+        const mrpt::math::TPose2D& robot) const {
+        return readingTerm(r, robot, likelihoodOptions.association);
+    }
+    /** The same with the association given (not the INI's). */
+    std::optional<TReadingTerm> readingTerm(
+        const rfir::obs::CObservationIRSignals::TReading& r,
+        const mrpt::math::TPose2D& robot, TAssociation how) const;
 
     /** Sum over the readings of the log-likelihood (eq. 5.2 with 5.3). Readings
      * with no code (raw windows not decoded yet) are skipped. */

@@ -18,6 +18,7 @@ struct TRunResult {
     size_t steps = 0, irObservations = 0, readings = 0, used = 0, unknownIds = 0,
            decoded = 0, resetEvents = 0, resetParticles = 0;
     std::optional<double> firstUniqueTime;
+    size_t startHistoryReadings = 0;  //!< readings before it that weighed the start
     size_t gated = 0;  //!< readings inconsistent with the motion prior (not used)
     /** A lost track: when declared (and redrawn from unique ID `id`), and
      * when the particles were confident again (nullopt: not by the end). */

@@ -112,6 +112,38 @@ TEST(IRApps, LocalizeOdometryOnly) {
               "odometry-only");
 }
 
+// A robot that starts at a known place (start_pose = log): the estimate from
+// the first instant, drawn about the log's start pose; a log without one is
+// an error naming the key, not a silent global start.
+TEST(IRApps, LocalizeKnownStartFromTheLog) {
+    const std::string out = kDir + "/out_known";
+    ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
+                          "' --set localization.start_pose=log")),
+              0);
+    const auto gt = rfir::common::loadTUM(kDir + "/run.gt.tum");
+    const auto p = rfir::common::loadTUM(out + "/path.tum");
+    EXPECT_EQ(p.size(), gt.size());  // every instant, from the start
+    const auto stats = nlohmann::json::parse(slurp(out + "/stats.json"));
+    EXPECT_EQ(stats.at("start_pose"), "log");
+    EXPECT_LT(stats.at("path_errors").at("robot").at("max_dist").get<double>(), 0.1)
+        << stats.at("path_errors");
+
+    const std::string txt = kDir + "/no_start.txt", raw = kDir + "/no_start.rawlog";
+    std::ofstream(txt) << "format textlog 1\nreceiver left 0.1 0.2 0.35\n"
+                          "odom 0 0 0 0\nir 0 left 3,9 1.82\nodom 0.1 0.05 0 0.01\n";
+    ASSERT_EQ(sh(kBin + "rfir-import -q --input '" + txt + "' --output '" + raw + "'"),
+              0);
+    std::string err;
+    EXPECT_EQ(sh(kBin + "rfir-localize -q --rawlog '" + raw + "' --emitters '" + kDir +
+                     "/run.gt_map.txt' --out-dir '" + kDir +
+                     "/o_ns' --set localization.start_pose=log",
+                 nullptr, &err),
+              1);
+    EXPECT_NE(err.find(raw + ": [localization] start_pose = log"), std::string::npos)
+        << err;
+    EXPECT_FALSE(fs::exists(kDir + "/o_ns/path.tum"));
+}
+
 TEST(IRApps, LocalizeRejectsUnknownIniKeyAndSection) {
     std::string ini = slurp(std::string(RFIR_SOURCE_DIR) + "/config_ini/ir_localize.ini");
     const std::string bad = kDir + "/bad_key.ini";

@@ -65,7 +65,7 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
         std::cout << table;
     }
     // A warning, also under --quiet.
-    if (!cfg.odometryOnly && !res.firstUniqueTime)
+    if (!cfg.odometryOnly && res.path.empty())
         std::cerr << "rfir-localize: warning: no unique-ID reading: no estimate\n";
     return 0;
 }

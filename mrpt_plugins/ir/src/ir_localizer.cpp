@@ -67,6 +67,18 @@ CIRLocalizer::CIRLocalizer(std::shared_ptr<rfir::maps::CIREmitterMap> map,
     }
 }
 
+void CIRLocalizer::startAt(const mrpt::math::TPose2D& p) {
+    for (auto& part : m_pdf.m_particles) {
+        part.d = mrpt::math::TPose2D(
+            p.x + m_rng.drawGaussian1D(0, m_params.startStdXY),
+            p.y + m_rng.drawGaussian1D(0, m_params.startStdXY),
+            mrpt::math::wrapToPi(p.phi + m_rng.drawGaussian1D(0, m_params.startStdPhi)));
+        part.log_w = 0;
+    }
+    m_started = true;
+    m_history.clear();
+}
+
 double CIRLocalizer::positionStd() const {
     const auto [cov, mean] = m_pdf.getCovarianceAndMean();
     // Largest standard deviation of the position (2x2 block eigenvalue).
@@ -203,6 +215,7 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
         rfir::models::resampleIfNeeded(m_pdf, m_pfOptions, m_rng);
         info.used = obs->readings.size();
     }
+    info.uniqueRead = unique;
     info.justStarted = unique && !m_started;
     m_started = m_started || unique;
     if (!m_started) remember(early);

@@ -9,6 +9,7 @@
 namespace rfir::ir {
 namespace {
 using R = rfir::ini::TRange;
+const std::vector<std::string> kStartPose = {"unknown", "log"};
 const std::vector<std::string> kResampling = {"multinomial", "residual", "stratified",
                                               "systematic"};
 
@@ -57,35 +58,28 @@ void TLocalizerParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
                                           const std::string& prefix) {
     const std::string s = prefix + "localization";
     const rfir::ini::CIniSection s_sec(c, s,
-                                       {"num_particles",
-                                        "init_area",
-                                        "init_margin",
-                                        "start_from_reading",
-                                        "start_history",
-                                        "sensor_resetting",
-                                        "reset_min_fraction",
-                                        "reset_ratio",
-                                        "reset_distance_sigma",
-                                        "reset_view_margin",
-                                        "repeated_before_unique",
-                                        "association_max_std",
-                                        "ess_threshold",
-                                        "resampling",
-                                        "decode_raw",
-                                        "gate_max_std",
-                                        "gate_loglik",
-                                        "gate_min_fraction",
-                                        "lost_min_readings",
-                                        "lost_min_ids",
-                                        "emitter_check_radius",
-                                        "emitter_min_checks",
-                                        "inconsistent_weight"});
+                                       {"num_particles",       "init_area",
+                                        "init_margin",         "start_from_reading",
+                                        "start_history",       "start_pose",
+                                        "start_std_xy",        "start_std_phi",
+                                        "sensor_resetting",    "reset_min_fraction",
+                                        "reset_ratio",         "reset_distance_sigma",
+                                        "reset_view_margin",   "repeated_before_unique",
+                                        "association_max_std", "ess_threshold",
+                                        "resampling",          "decode_raw",
+                                        "gate_max_std",        "gate_loglik",
+                                        "gate_min_fraction",   "lost_min_readings",
+                                        "lost_min_ids",        "emitter_check_radius",
+                                        "emitter_min_checks",  "inconsistent_weight"});
     numParticles =
         size_t(s_sec.getInt("num_particles", int64_t(numParticles), 1, 10000000));
     readArea(s_sec, *this);
     initMargin = s_sec.getDouble("init_margin", initMargin, R::closed(0, 1000));
     startFromReading = s_sec.getBool("start_from_reading", startFromReading);
     startHistory = s_sec.getDouble("start_history", startHistory, R::closed(0, 1000));
+    startFromLog = s_sec.getEnum("start_pose", kStartPose, startFromLog ? 1 : 0) == 1;
+    startStdXY = s_sec.getDouble("start_std_xy", startStdXY, R::closed(0, 1000));
+    startStdPhi = s_sec.getDouble("start_std_phi", startStdPhi, R::closed(0, M_PI));
     sensorResetting = s_sec.getBool("sensor_resetting", sensorResetting);
     resetMinFraction =
         s_sec.getDouble("reset_min_fraction", resetMinFraction, R::closed(0, 1));
@@ -132,6 +126,9 @@ void TLocalizerParams::dumpToTextStream(std::ostream& o) const {
     o << "init_margin = " << initMargin << "\n"
       << "start_from_reading = " << b(startFromReading) << "\n"
       << "start_history = " << startHistory << "\n"
+      << "start_pose = " << kStartPose[startFromLog ? 1 : 0] << "\n"
+      << "start_std_xy = " << startStdXY << "\n"
+      << "start_std_phi = " << startStdPhi << "\n"
       << "sensor_resetting = " << b(sensorResetting) << "\n"
       << "reset_min_fraction = " << resetMinFraction << "\n"
       << "reset_ratio = " << resetRatio << "\n"

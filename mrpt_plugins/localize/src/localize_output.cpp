@@ -131,6 +131,7 @@ std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& e
     j["first_unique_time"] =
         res.firstUniqueTime ? printed(*res.firstUniqueTime, "%f") : TJson();
     j["start_history_readings"] = res.startHistoryReadings;
+    j["start_pose"] = cfg.params.startFromLog ? "log" : "unknown";
     j["poses"] = res.path.size();
     j["reset_events"] = res.resetEvents;
     j["reset_particles"] = res.resetParticles;

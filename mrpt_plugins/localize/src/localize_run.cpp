@@ -42,6 +42,14 @@ TRunResult runLocalization(const TConfig& cfg,
     std::unique_ptr<rfir::ir::CIRLocalizer> loc;
     if (!cfg.odometryOnly)
         loc = std::make_unique<rfir::ir::CIRLocalizer>(cfg.map, cfg.params, cfg.seed);
+    if (loc && cfg.params.startFromLog) {
+        // The robot's own knowledge, never the ground truth.
+        if (!reader.header().startPose)
+            throw std::runtime_error(cfg.rawlogPath +
+                                     ": [localization] start_pose = log, but the log "
+                                     "has no start pose (a text log's 'start' line)");
+        loc->startAt(reader.header().startPose->asTPose());
+    }
     const auto t0 = std::chrono::steady_clock::now();
     rfir::common::TRawlogStep st;
     while (reader.next(st)) {
@@ -66,10 +74,8 @@ TRunResult runLocalization(const TConfig& cfg,
             res.resetEvents++;
             res.resetParticles += info.resetParticles;
         }
-        if (info.justStarted) {
-            res.firstUniqueTime = st.t;
-            res.startHistoryReadings = info.historyReadings;
-        }
+        if (info.uniqueRead && !res.firstUniqueTime) res.firstUniqueTime = st.t;
+        if (info.justStarted) res.startHistoryReadings = info.historyReadings;
         res.gated += info.gated;
         reportLost(info, st.t, res);
         if (info.started) res.path.push_back({st.t, loc->estimate()});

@@ -57,6 +57,13 @@ struct TLocalizerParams : public mrpt::config::CLoadableOptions {
      * emitter leaves a ring of poses; the path's earlier readings pick the
      * headings on it). 0: off (the thesis). */
     double startHistory = 2.0;
+    /** start_pose: `unknown` (global localization, the thesis) or `log`: the
+     * robot starts where the log's header says (`start`), e.g. at its dock;
+     * the particles are drawn about it with start_std_xy (m) and
+     * start_std_phi (rad) and the estimate is reported from the first instant
+     * (startAt). */
+    bool startFromLog = false;
+    double startStdXY = 0.05, startStdPhi = 0.05;
     bool sensorResetting = true;       //!< sensor_resetting
     double resetMinFraction = 0.001;   //!< reset_min_fraction: weight in view below it
     double resetRatio = 0.5;           //!< reset_ratio: share of particles redrawn
@@ -93,6 +100,7 @@ struct TLocalizerParams : public mrpt::config::CLoadableOptions {
 struct TLocalizerStep {
     bool started = false;       //!< estimation running (a unique ID was seen)
     bool justStarted = false;   //!< this step saw the first unique ID
+    bool uniqueRead = false;    //!< this step used a unique-ID reading
     size_t readings = 0;        //!< readings with a code
     size_t used = 0;            //!< readings that weighed the particles
     size_t unknownIds = 0;      //!< codes forming an ID absent from the map
@@ -123,6 +131,11 @@ class CIRLocalizer {
     TLocalizerStep step(const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
                         const rfir::obs::CObservationIRSignals* ir,
                         std::optional<double> t = std::nullopt);
+
+    /** A known start: every particle drawn about `p` (start_std_xy,
+     * start_std_phi), the estimation running from now on. Before the first
+     * step. */
+    void startAt(const mrpt::math::TPose2D& p);
 
     /** Weighted mean of the particles (eq. 5.4). */
     mrpt::poses::CPose2D estimate() const;

@@ -48,8 +48,7 @@ class CProblem {
             const auto u = s.odometryIncrement.value_or(mrpt::poses::CPose2D());
             // The filters' odometry noise model (models/odometry_noise.h).
             double wxy, wphi;
-            rfir::models::odometryInformationSqrt(p.motion.noise(), u.x(), u.y(), u.phi(),
-                                                  wxy, wphi);
+            detail::stepOdometryInformationSqrt(s, p.motion.noise(), wxy, wphi);
             odo_.push_back({u.x(), u.y(), u.phi(), wxy, wphi});
         }
         for (size_t k = 0; k < K_; k++) {
@@ -210,6 +209,29 @@ void marginals(const CProblem& pb, const TState& s, std::vector<TLandmarkOut>& m
 }  // namespace
 
 namespace detail {
+void stepOdometryInformationSqrt(const TSlamInput& s,
+                                 const rfir::models::OdometryNoiseParams& n, double& wxy,
+                                 double& wphi) {
+    const auto u = s.odometryIncrement.value_or(mrpt::poses::CPose2D());
+    if (s.odometryParts.empty()) {
+        rfir::models::odometryInformationSqrt(n, u.x(), u.y(), u.phi(), wxy, wphi);
+        return;
+    }
+    double vxy = 0, vphi = 0;
+    for (const auto& q : s.odometryParts) {
+        double sxy, sphi;
+        n.stds(q.interval.x(), q.interval.y(), q.interval.phi(), sxy, sphi);
+        vxy += q.fraction * sxy * sxy;
+        vphi += q.fraction * sphi * sphi;
+    }
+    // A poll exactly at a record (a zero share): as the noise floor of its
+    // increment, not an infinite weight.
+    double fxy, fphi;
+    rfir::models::odometryInformationSqrt(n, u.x(), u.y(), u.phi(), fxy, fphi);
+    wxy = vxy > 0 ? 1 / std::sqrt(vxy) : fxy;
+    wphi = vphi > 0 ? 1 / std::sqrt(vphi) : fphi;
+}
+
 void gaussianMarginalStds(const std::vector<TSlamInput>& inputs,
                           const mrpt::poses::CPose2D& start,
                           const TGraphSmootherParams& params, TSlamRun& run) {

@@ -40,6 +40,7 @@ struct TGraph {
     std::vector<TTag> m;      //!< tags
     std::vector<bool> cut;    //!< cut[k]: no odometry factor into pose k
     std::vector<bool> moved;  //!< moved[k]: an odometry record ends at step k
+    const std::vector<TSlamInput>* in = nullptr;  //!< the steps (odometry parts)
 };
 
 /** Distinct tags read again after `minTravel` m of odometry path since
@@ -65,6 +66,7 @@ constexpr double kSameRecordTie = 1e4;
 TGraph collect(const std::vector<TSlamInput>& in, const TSlamRun& filtered) {
     TGraph g;
     g.K = in.size();
+    g.in = &in;
     g.cut.assign(g.K, false);
     for (size_t k = 0; k < g.K; k++) {
         g.u.push_back(in[k].odometryIncrement.value_or(mrpt::poses::CPose2D()));
@@ -184,8 +186,7 @@ std::pair<size_t, size_t> addFactors(ceres::Problem& pb, TGraph& g, TPose& start
         if (g.cut[k]) continue;
         const auto& u = g.u[k];
         double wxy, wphi;
-        rfir::models::odometryInformationSqrt(p.motion.noise(), u.x(), u.y(), u.phi(),
-                                              wxy, wphi);
+        detail::stepOdometryInformationSqrt((*g.in)[k], p.motion.noise(), wxy, wphi);
         // A poll between two odometry records sits at the earlier one, as in
         // the filters: tied to it, not given the noise floor of an increment
         // of its own (9 polls per record loosened the chain 3 x per metre).

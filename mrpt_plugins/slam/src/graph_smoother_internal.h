@@ -14,6 +14,14 @@ TGraphSmootherResult smoothRunCeres(const std::vector<TSlamInput>& inputs,
                                     const mrpt::poses::CPose2D& start,
                                     const TSlamRun& filtered,
                                     const TGraphSmootherParams& params);
+/** 1 / std (m, rad) of step `s`'s odometry factor under the noise model `n`:
+ * of its increment, or, for an interpolated poll ([motion]
+ * interpolate_polls), the sum of its parts' shares of their intervals'
+ * variances, as the filters draw it (the factors over one interval then add
+ * up to that interval's noise, however many polls fall in it). */
+void stepOdometryInformationSqrt(const TSlamInput& s,
+                                 const rfir::models::OdometryNoiseParams& n, double& wxy,
+                                 double& wphi);
 /** Marginal stds of the tags of `run.map` at `run`'s path and map, from the
  * Gaussian linearisation (reads as uniform squares' stds). */
 void gaussianMarginalStds(const std::vector<TSlamInput>& inputs,

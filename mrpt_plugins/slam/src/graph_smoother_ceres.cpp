@@ -272,9 +272,11 @@ TGraphSmootherResult smoothRunCeres(const std::vector<TSlamInput>& inputs,
     // the filter's path it ran off to a wrong scale (+0.1 on the 300 mm
     // loop). Last the bias too; each solve picks the unread tags anew.
     res.closures = closures(g, params.options.closure_min_travel);
+    const bool wanted =
+        params.options.drift_prior_std > 0 || params.options.scale_prior_std > 0;
     res.biasEstimated =
-        res.closures >= size_t(params.options.bias_min_closures) &&
-        (params.options.drift_prior_std > 0 || params.options.scale_prior_std > 0);
+        wanted && res.closures >= size_t(params.options.bias_min_closures);
+    res.biasHeld = wanted && !res.biasEstimated;
     TGraphSmootherParams solveParams = params;  // the bias held if not estimated
     if (!res.biasEstimated)
         solveParams.options.drift_prior_std = solveParams.options.scale_prior_std = 0;

@@ -294,8 +294,7 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
         logStream(a) << "rfir-slam: smoother cut the odometry at t = " << std::fixed
                      << std::setprecision(2) << t << " s (kidnapping)\n"
                      << std::defaultfloat;
-    const bool wanted = p.options.drift_prior_std > 0 || p.options.scale_prior_std > 0;
-    if (p.options.solver == "ceres" && wanted && !res.biasEstimated)
+    if (res.biasHeld)
         logStream(a) << "rfir-slam: odometry systematic error not estimated: "
                      << res.closures << " tags read again after "
                      << p.options.closure_min_travel << " m of path (bias_min_closures "

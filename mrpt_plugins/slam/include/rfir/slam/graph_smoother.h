@@ -49,6 +49,8 @@ struct TGraphSmootherResult {
      * if there are at least bias_min_closures of them (biasEstimated). */
     size_t closures = 0;
     bool biasEstimated = false;
+    /** A bias prior was set but too few closures: the bias was held (ceres). */
+    bool biasHeld = false;
     /** Times (s) of the odometry increments cut as kidnappings. */
     std::vector<double> cutTimes;
 };

@@ -100,15 +100,23 @@ TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
     EXPECT_EQ(slurp(out + "/path.tum"), slurp(out2 + "/path.tum"));
 }
 
-TEST(IRApps, LocalizeOdometryOnly) {
-    const std::string out = kDir + "/out_odo";
-    ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
-                          "' --odometry-only")),
+namespace {
+/** rfir-localize into kDir/`name` with the ground-truth emitters and `args`;
+ * expects a pose for every instant (from the start); returns stats.json. */
+nlohmann::json localizeEveryInstant(const std::string& name, const std::string& args) {
+    const std::string out = kDir + "/" + name;
+    EXPECT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
+                          "' " + args)),
               0);
     const auto gt = rfir::common::loadTUM(kDir + "/run.gt.tum");
     const auto p = rfir::common::loadTUM(out + "/path.tum");
-    EXPECT_EQ(p.size(), gt.size());  // every instant, from the start
-    EXPECT_EQ(nlohmann::json::parse(slurp(out + "/stats.json")).at("mode"),
+    EXPECT_EQ(p.size(), gt.size());
+    return nlohmann::json::parse(slurp(out + "/stats.json"));
+}
+}  // namespace
+
+TEST(IRApps, LocalizeOdometryOnly) {
+    EXPECT_EQ(localizeEveryInstant("out_odo", "--odometry-only").at("mode"),
               "odometry-only");
 }
 
@@ -116,14 +124,8 @@ TEST(IRApps, LocalizeOdometryOnly) {
 // the first instant, drawn about the log's start pose; a log without one is
 // an error naming the key, not a silent global start.
 TEST(IRApps, LocalizeKnownStartFromTheLog) {
-    const std::string out = kDir + "/out_known";
-    ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
-                          "' --set localization.start_pose=log")),
-              0);
-    const auto gt = rfir::common::loadTUM(kDir + "/run.gt.tum");
-    const auto p = rfir::common::loadTUM(out + "/path.tum");
-    EXPECT_EQ(p.size(), gt.size());  // every instant, from the start
-    const auto stats = nlohmann::json::parse(slurp(out + "/stats.json"));
+    const auto stats =
+        localizeEveryInstant("out_known", "--set localization.start_pose=log");
     EXPECT_EQ(stats.at("start_pose"), "log");
     EXPECT_LT(stats.at("path_errors").at("robot").at("max_dist").get<double>(), 0.1)
         << stats.at("path_errors");

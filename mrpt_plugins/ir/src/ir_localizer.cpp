@@ -203,6 +203,9 @@ TLocalizerStep CIRLocalizer::step(const std::optional<mrpt::poses::CPose2D>& inc
         m_recovering = true;
     } else if (unique && !m_started && m_params.startFromReading) {
         info.resetParticles = sensorReset(*obs, true);
+        // This instant's repeated IDs too (the other receiver may be under a
+        // repeated emitter now): at the current pose.
+        remember(early);
         info.historyReadings = weighByHistory();
     } else if (unique && m_params.sensorResetting)
         info.resetParticles = sensorReset(*obs, false);

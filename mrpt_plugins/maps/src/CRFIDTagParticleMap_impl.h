@@ -225,6 +225,41 @@ struct CRFIDTagParticleMapImpl {
         return {r.x, r.y, r.halfX, r.halfY};
     }
 
+    /** Counts the reads of `e` at this instant (areas from `first` on) that
+     * its estimate contradicts; returns the index of the read at which more
+     * reads in a row have contradicted the tag than agreed with it since it
+     * was placed (it is then placed again there: a tag mapped from a ghost
+     * read, or moved), or areas.size(). */
+    static size_t judgeReads(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
+                             const std::vector<ReaderArea>& areas, size_t first,
+                             const rfir::models::DetectionLikelihood& det) {
+        size_t reseat = areas.size();
+        for (size_t k = first; k < areas.size(); k++) {
+            if (!det.contradicts(robot, areas[k], e.estimate.mean)) {
+                e.support++;
+                e.againstRun = 0;
+                continue;
+            }
+            e.contradicted++;
+            if (++e.againstRun > e.support && reseat == areas.size() &&
+                m.insertionOptions.reseatContradicted)
+                reseat = k;
+        }
+        return reseat;
+    }
+
+    /** Places `e` again over one reader's square: its former reads no longer
+     * count for it, nor does its estimate weigh the robot in this visit. */
+    static void reseatTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
+                          const ReaderArea& r, rfir::models::TRandom& rng) {
+        initTag(m, e, robot, r, rng);
+        e.support = 1;
+        e.againstRun = 0;
+        e.reseats++;
+        e.visitStartEstimate = e.estimate;
+        e.visitStartSample = e.sample;
+    }
+
     static void insertRFID(Map& m, const rfir::obs::CObservationRFIDReaders& o,
                            const mrpt::math::TPose2D& robot) {
         const Map::TSensorTrack before = m.m_track[0];
@@ -254,12 +289,16 @@ struct CRFIDTagParticleMapImpl {
                 first = 1;
             }
             Entry& e = it->second;
+            if (first == 1) e.support = 1;
             // Judged against the estimate before this instant's reads move it.
-            for (size_t k = first; k < areas.size(); k++)
-                if (det.contradicts(robot, areas[k], e.estimate.mean)) e.contradicted++;
+            const size_t reseat = judgeReads(m, e, robot, areas, first, det);
             markRead(m, e, before, m.m_track[0], areas.size());
-            if (first < areas.size()) {
-                const std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
+            std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
+            if (reseat < areas.size()) {
+                reseatTag(m, e, robot, areas[reseat], rng);
+                rest.erase(rest.begin() + long(reseat - first));
+            }
+            if (!rest.empty()) {
                 const bool drawn =
                     m.insertionOptions.tagRobotPose == TTagRobotPose::Samples;
                 // The mean pose's cos and sin once per tag, not per tag

@@ -121,6 +121,9 @@ void writeEntries(CArchive& a,
         a << e->spreadOrigin.x << e->spreadOrigin.y << e->spreadOrigin.phi
           << e->spreadTravel;
         a.WriteAs<uint64_t>(e->contradicted);  // v4
+        a.WriteAs<uint64_t>(e->support);       // v5
+        a.WriteAs<uint64_t>(e->againstRun);
+        a.WriteAs<uint64_t>(e->reseats);
     }
 }
 
@@ -151,6 +154,12 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
                 e.spreadTravel;
         }
         if (version >= 4) e.contradicted = a.ReadAs<uint64_t>();
+        if (version >= 5) {
+            e.support = a.ReadAs<uint64_t>();
+            e.againstRun = a.ReadAs<uint64_t>();
+            e.reseats = a.ReadAs<uint64_t>();
+        } else  // older maps: the reads that did not contradict the tag
+            e.support = e.detections - std::min(e.detections, e.contradicted);
         const std::string id = e.id;
         t.emplace(id, std::move(e));
     }
@@ -159,8 +168,9 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
 
 uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
     // 3: estimators by registry name with their own compact state; 4: the
-    // outlier mixture's options and the contradicted-read counts.
-    return 4;
+    // outlier mixture's options and the contradicted-read counts; 5: the
+    // reseat counts and option (reseat_contradicted).
+    return 5;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
@@ -184,6 +194,7 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out.WriteAs<uint64_t>(lo.robotLikelihoodK);
     out << io.spreadCommitTravel;
     out << lo.detection.outlierWeight << lo.detection.outlierLogFloor;  // v4
+    out << io.reseatContradicted;                                       // v5
     out << m_landmarkNames;
     out.WriteAs<uint64_t>(m_track[0].steps);
     out.WriteAs<uint64_t>(m_track[1].steps);
@@ -199,7 +210,8 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
         case 1:
         case 2:
         case 3:
-        case 4: {
+        case 4:
+        case 5: {
             in >> genericMapParams;
             auto& io = insertionOptions;
             if (version >= 3)
@@ -248,6 +260,8 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                 rfir::models::DetectionModelParams().outlierLogFloor;
             if (version >= 4)
                 in >> lo.detection.outlierWeight >> lo.detection.outlierLogFloor;
+            // Maps written before it behaved without it.
+            io.reseatContradicted = version >= 5 && readStrictBool(in, kWhat);
             m_landmarkNames.resize(
                 rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
             for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);

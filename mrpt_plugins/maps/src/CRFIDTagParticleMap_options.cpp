@@ -26,10 +26,17 @@ const std::vector<std::string> kRobotLikNames = {"tag_mean", "tag_particles"};
 
 namespace {
 const std::vector<std::string>& insertionKeys() {
-    static const std::vector<std::string> k = {
-        "estimator",        "num_particles",       "lag",        "smoother_step_sigma",
-        "roughening_sigma", "ess_threshold",       "resampling", "seed",
-        "tag_robot_pose",   "spread_commit_travel"};
+    static const std::vector<std::string> k = {"estimator",
+                                               "num_particles",
+                                               "lag",
+                                               "smoother_step_sigma",
+                                               "roughening_sigma",
+                                               "ess_threshold",
+                                               "resampling",
+                                               "seed",
+                                               "tag_robot_pose",
+                                               "spread_commit_travel",
+                                               "reseat_contradicted"};
     return k;
 }
 }  // namespace
@@ -62,6 +69,7 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
         "tag_robot_pose", kRobotPoseNames, static_cast<size_t>(tagRobotPose)));
     spreadCommitTravel = sec.getDouble("spread_commit_travel", spreadCommitTravel,
                                        TRange::closed(0, 100000));
+    reseatContradicted = sec.getBool("reseat_contradicted", reseatContradicted);
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
@@ -75,7 +83,8 @@ void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) c
       << "seed                = " << seed << "\n"
       << "tag_robot_pose      = " << kRobotPoseNames[static_cast<size_t>(tagRobotPose)]
       << "\n"
-      << "spread_commit_travel = " << spreadCommitTravel << "\n";
+      << "spread_commit_travel = " << spreadCommitTravel << "\n"
+      << "reseat_contradicted = " << (reseatContradicted ? "true" : "false") << "\n";
 }
 
 namespace {

@@ -5,7 +5,9 @@
 #include <mrpt/random/RandomGenerators.h>
 #include <rfir/models/random.h>
 
+#include <algorithm>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 using namespace rfir::maps;
@@ -15,6 +17,8 @@ namespace {
 struct TPriorRecord {
     std::string kind, id;
     double x = 0, y = 0, sx = 0, sy = 0;
+    /** map.txt's read counts, if given: the reads that agreed with the tag. */
+    std::optional<uint64_t> agreed;
 };
 
 TPriorRecord parseRecord(const std::string& line, const std::string& where) {
@@ -27,13 +31,14 @@ TPriorRecord parseRecord(const std::string& line, const std::string& where) {
             throw std::runtime_error(where +
                                      ": the standard deviations must be two "
                                      "non-negative numbers");
-        // map.txt's read counts (reads, contradicted), not used by a prior.
+        // map.txt's read counts (reads, contradicted).
         double reads = 0, contradicted = 0;
         if (in >> reads) {
             if (!(in >> contradicted) || !(reads >= 0) || !(contradicted >= 0))
                 throw std::runtime_error(where +
                                          ": after the standard deviations, the read "
                                          "counts must be two non-negative numbers");
+            r.agreed = uint64_t(std::min(1e15, std::max(1.0, reads - contradicted)));
         }
     }
     std::string extra;
@@ -70,6 +75,9 @@ void CRFIDTagParticleMap::loadPriorFromTextFile(const std::string& path) {
         e.estimator->initFromPoints(pts);
         // Seen once: a prior entry is a known landmark, not a first visit.
         e.visits = 1;
+        // reseat_contradicted weighs a prior tag by its reads in the file; a
+        // surveyed one (no counts) is never placed again by reads.
+        e.support = r.agreed.value_or(uint64_t(1) << 62);
         CRFIDTagParticleMapImpl::refresh(*this, e);
         table.emplace(r.id, std::move(e));
     }

@@ -367,6 +367,7 @@ std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {
                        std::sqrt(std::max(0.0, est.cov(1, 1)))};
         l.reads = e->detections;
         l.contradicted = e->contradicted;
+        l.reseats = e->reseats;
         out.push_back(l);
     };
     for (const auto* e : map_.tags()) add(e, true);

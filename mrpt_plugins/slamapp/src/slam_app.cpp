@@ -160,13 +160,18 @@ using rfir::common::TJson;
 std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSlamRun& run,
                       uint64_t seed, const std::string& identity, const TJson& smoother) {
     size_t tags = 0, lms = 0;
-    for (const auto& l : run.map) (l.isTag ? tags : lms)++;
+    uint64_t reseats = 0;
+    for (const auto& l : run.map) {
+        (l.isTag ? tags : lms)++;
+        reseats += l.reseats;
+    }
     TJson j;
     j["method"] = rfir::slam::methodName(cfg.slam.method);
     j["seed"] = seed;
     j["steps"] = run.path.size();
     j["tags_mapped"] = tags;
     j["landmarks_mapped"] = lms;
+    j["tags_reseated"] = reseats;
     j["robot_particles"] = cfg.slam.robot_particles;
     j["mean_update_time_s"] = printed(run.meanStepTime);
     j["max_update_time_s"] = printed(run.maxStepTime);

@@ -86,6 +86,10 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         /** Of these, reads the tag's estimate at the time contradicted
          * (DetectionLikelihood::contradicts; map.txt's last column). */
         uint64_t contradicted = 0;
+        /** Reads that agreed with it since it was (last) placed, the reads
+         * in a row that contradicted it since, and how often it was placed
+         * again (reseat_contradicted). */
+        uint64_t support = 0, againstRun = 0, reseats = 0;
         uint64_t visits = 0;        //!< number of visits (first pass = 1)
         uint64_t lastReadStep = 0;  //!< index (1-based) of the last observation read in
         double lastReadTravel = 0;  //!< robot path length (m) at that observation
@@ -214,6 +218,9 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         rfir::models::TTagEstimatorParams params;
         uint64_t seed = 1;                                 //!< seed
         TTagRobotPose tagRobotPose = TTagRobotPose::Mean;  //!< tag_robot_pose
+        /** reseat_contradicted: a tag that more reads in a row contradict
+         * than agreed with it since it was placed is placed again. */
+        bool reseatContradicted = true;
         /** spread_commit_travel (m): samples_visit makes the spread permanent
          * at the first new visit after this much robot path since the tag's
          * first read (0: the second visit, which with a ring of readers can be

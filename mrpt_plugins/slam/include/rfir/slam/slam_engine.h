@@ -38,6 +38,8 @@ struct TLandmarkOut {
      * the time contradicted (map.txt's last two columns); FastSLAM: unset. */
     std::optional<uint64_t> reads{};
     uint64_t contradicted = 0;
+    /** PF/PS: times the tag was placed again ([tagmap] reseat_contradicted). */
+    uint64_t reseats = 0;
 };
 
 class CSlamEngine {

@@ -1,0 +1,104 @@
+// CRFIDTagParticleMap, [tagmap] reseat_contradicted: a tag that more reads in
+// a row contradict than agreed with it since it was placed is placed again
+// at the read (a tag first mapped from a ghost read, or moved); a tag with
+// many agreeing reads is not moved by a few contradicting ones (the robot
+// may be the one that is off); the counts survive serialization.
+#include "test_tagmaps_sim.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <cmath>
+
+using namespace tagmaps_test;
+using rfir::maps::CRFIDTagParticleMap;
+
+namespace {
+/** One 60 mm reader 0.1 m ahead of the robot reads `tag`. */
+rfir::obs::CObservationRFIDReaders::Ptr readOf(const std::string& tag) {
+    auto o = rfir::obs::CObservationRFIDReaders::Create();
+    rfir::obs::CObservationRFIDReaders::TReading rd;
+    rd.reader = reader("A", 0.1, 0.0, 0.03);
+    rd.tags.push_back(tag);
+    o->readings.push_back(rd);
+    return o;
+}
+
+double distTo(const CRFIDTagParticleMap& m, const std::string& id, double x, double y) {
+    const auto& mean = m.getTag(id)->estimate.mean;
+    return std::hypot(mean.x - x, mean.y - y);
+}
+
+/** A ghost read places "G" 0.4 m from its true spot (1.1, 0); then the robot
+ * reads it three times where it really is. */
+CRFIDTagParticleMap ghostThenTrue(bool reseat) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.reseatContradicted = reseat;
+    m.insertionOptions.seed = 7;
+    m.insertObservation(*readOf("G"), pose3({0.6, 0.0, 0.0}));  // the ghost
+    for (int i = 0; i < 3; i++)
+        m.insertObservation(*readOf("G"), pose3({1.0 + 0.005 * i, 0.0, 0.0}));
+    return m;
+}
+}  // namespace
+
+TEST(TagMapReseat, GhostPlacedTagIsPlacedAgainByTheReadsThatContradictIt) {
+    const auto on = ghostThenTrue(true);
+    const auto* t = on.getTag("G");
+    ASSERT_NE(t, nullptr);
+    // The first true read is 1 against 1 (not yet), the second 2 against 1.
+    EXPECT_EQ(t->reseats, 1u);
+    EXPECT_EQ(t->contradicted, 2u);
+    EXPECT_EQ(t->detections, 4u);
+    EXPECT_LT(distTo(on, "G", 1.1, 0.0), 0.03);
+    // Without it the tag stays where the ghost put it: no particle can move.
+    const auto off = ghostThenTrue(false);
+    EXPECT_EQ(off.getTag("G")->reseats, 0u);
+    EXPECT_EQ(off.getTag("G")->contradicted, 3u);
+    EXPECT_GT(distTo(off, "G", 1.1, 0.0), 0.3);
+}
+
+TEST(TagMapReseat, WellSupportedTagOutlastsAsManyContradictingReads) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.seed = 3;
+    ASSERT_TRUE(m.insertionOptions.reseatContradicted);  // the code's default
+    for (int i = 0; i < 10; i++)  // 10 agreeing reads at (1.1, 0)
+        m.insertObservation(*readOf("T"), pose3({1.0 + 0.002 * (i % 3), 0.0, 0.0}));
+    ASSERT_EQ(m.getTag("T")->contradicted, 0u);
+    // A robot that believes itself 0.3 m off: as many contradicting reads as
+    // agreeing ones leave the tag where it was...
+    for (int i = 0; i < 10; i++)
+        m.insertObservation(*readOf("T"), pose3({1.3, 0.0, 0.0}));
+    EXPECT_EQ(m.getTag("T")->contradicted, 10u);
+    EXPECT_EQ(m.getTag("T")->reseats, 0u);
+    EXPECT_LT(distTo(m, "T", 1.1, 0.0), 0.03);
+    // ...one more is the majority: the tag follows the reads.
+    m.insertObservation(*readOf("T"), pose3({1.3, 0.0, 0.0}));
+    EXPECT_EQ(m.getTag("T")->reseats, 1u);
+    EXPECT_LT(distTo(m, "T", 1.4, 0.0), 0.03);
+    // One agreeing read in between starts the count again.
+    m.insertObservation(*readOf("T"), pose3({1.3, 0.0, 0.0}));
+    EXPECT_EQ(m.getTag("T")->againstRun, 0u);
+    EXPECT_EQ(m.getTag("T")->support, 2u);
+}
+
+TEST(TagMapReseat, CountsAndOptionSurviveSerialization) {
+    const auto m = ghostThenTrue(true);
+    mrpt::io::CMemoryStream buf;
+    auto out = mrpt::serialization::archiveFrom(buf);
+    out << m;
+    buf.Seek(0);
+    CRFIDTagParticleMap back;
+    back.insertionOptions.reseatContradicted = false;
+    auto in = mrpt::serialization::archiveFrom(buf);
+    in >> back;
+    EXPECT_TRUE(back.insertionOptions.reseatContradicted);
+    const auto* a = m.getTag("G");
+    const auto* b = back.getTag("G");
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->support, a->support);
+    EXPECT_EQ(b->againstRun, a->againstRun);
+    EXPECT_EQ(b->reseats, a->reseats);
+    EXPECT_EQ(b->contradicted, a->contradicted);
+}

@@ -3,7 +3,9 @@
 # false resets per hour of data on the stock simulator INIs without a
 # kidnapping, and on the kidnap INIs the detection delay (first reset after
 # the put-down) and the recovery time (from the put-down until the robot
-# error stays under 2 x the same run's error without the kidnapping for 5 s).
+# error stays under 2 x the same run's error without the kidnapping for 5 s;
+# and, second, under 2 x the error the run had when it was last at the same
+# place, the error a robot relocalised against its own map comes back to).
 #
 #   bash scripts/kidnap_eval.sh                      # 3 seeds, pf and ps
 #   bash scripts/kidnap_eval.sh --seeds 1 --methods pf --out-dir /tmp/k
@@ -81,6 +83,31 @@ def errors(d, ini, m):
         if g: e.append((t, math.hypot(x - g[0], y - g[1])))
     return e
 
+def place_errors(d, ini, m, T):
+    """For each time after the kidnapping, the error the same run had when it
+    was last at that place before it (nearest ground-truth position, within
+    0.1 m; None if it never was): a robot put down where it has been is
+    relocalised against the tags it mapped there, so this is the error it
+    can be expected to come back to."""
+    gt = tum(f"{d}/{ini}.gt.tum")
+    e = dict((round(t, 3), v) for t, v in errors(d, ini, m))
+    before = [(t, x, y) for t, x, y in gt if t < T and round(t, 3) in e]
+    out = {}
+    for t, x, y in gt:
+        if t < T: continue
+        best = min(before, key=lambda b: (b[1] - x) ** 2 + (b[2] - y) ** 2)
+        if math.hypot(best[1] - x, best[2] - y) <= 0.1:
+            out[round(t, 3)] = e[round(best[0], 3)]
+    return out
+
+def recovery(e, down, bound):
+    """From the put-down until every error for 5 s is under bound(t, v)."""
+    for i, (t, _) in enumerate(e):
+        if t < down: continue
+        w = [(tt, v) for tt, v in e[i:] if tt <= t + 5]
+        if all(v < bound(tt) for tt, v in w): return t - down
+    return None
+
 def resets(d, m):
     return json.load(open(f"{d}/{m}/stats.json"))["kidnap_reset_times_s"]
 
@@ -98,8 +125,8 @@ for m in methods:
             if r: bad.add(f"{ini} ({len(r)})" if seeds == 1 else ini)
     print(f"| {m} | {n / hours:.1f} ({n} resets) | {hours:.2f} | {', '.join(sorted(bad)) or '-'} |")
 print()
-print("| method | kidnap INI | seed | false resets before | detection delay (s) | recovery (s) | error after, mm (unkidnapped) |")
-print("| --- | --- | --- | --- | --- | --- | --- |")
+print("| method | kidnap INI | seed | false resets before | detection delay (s) | recovery (s) | recovery to the same place's error (s) | error after, mm (unkidnapped) |")
+print("| --- | --- | --- | --- | --- | --- | --- | --- |")
 for ini in kidnap:
     c = configparser.ConfigParser(inline_comment_prefixes=None)
     c.read(f"config_ini/{ini}.ini")
@@ -116,14 +143,14 @@ for ini in kidnap:
             after = [v for t, v in e if t >= down + 15]
             refAfter = [v for t, v in er if t >= down + 15]
             det = [t for t in r if t >= T]
-            rec = None
-            for i, (t, _) in enumerate(e):
-                if t < down: continue
-                w = [v for tt, v in e[i:] if tt <= t + 5]
-                if all(v < 2 * ref for v in w): rec = t - down; break
+            rec = recovery(e, down, lambda t: 2 * ref)
+            # Where the robot was never before (no pose within 0.1 m), no bound.
+            place = place_errors(d, ini, m, T)
+            recPlace = recovery(e, down, lambda t: 2 * place.get(round(t, 3), math.inf))
             f = lambda v: "none" if v is None else f"{v:.1f}"
             print(f"| {m} | {ini} | {s} | {sum(1 for t in r if t < T)} | "
                   f"{f(det[0] - down if det else None)} ({len(det)} resets) | {f(rec)} | "
+                  f"{f(recPlace)} | "
                   f"{1e3 * sum(after) / len(after):.0f} ({1e3 * sum(refAfter) / len(refAfter):.0f}) |")
 PY
 echo "kidnap_eval.sh: outputs in $out" >&2

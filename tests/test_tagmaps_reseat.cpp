@@ -63,7 +63,7 @@ TEST(TagMapReseat, WellSupportedTagOutlastsAsManyContradictingReads) {
     CRFIDTagParticleMap m;
     m.insertionOptions.seed = 3;
     ASSERT_TRUE(m.insertionOptions.reseatContradicted);  // the code's default
-    for (int i = 0; i < 10; i++)  // 10 agreeing reads at (1.1, 0)
+    for (int i = 0; i < 10; i++)                         // 10 agreeing reads at (1.1, 0)
         m.insertObservation(*readOf("T"), pose3({1.0 + 0.002 * (i % 3), 0.0, 0.0}));
     ASSERT_EQ(m.getTag("T")->contradicted, 0u);
     // A robot that believes itself 0.3 m off: as many contradicting reads as

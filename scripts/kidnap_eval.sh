@@ -83,14 +83,13 @@ def errors(d, ini, m):
         if g: e.append((t, math.hypot(x - g[0], y - g[1])))
     return e
 
-def place_errors(d, ini, m, T):
+def place_errors(gt, e, T):
     """For each time after the kidnapping, the error the same run had when it
     was last at that place before it (nearest ground-truth position, within
     0.1 m; None if it never was): a robot put down where it has been is
     relocalised against the tags it mapped there, so this is the error it
     can be expected to come back to."""
-    gt = tum(f"{d}/{ini}.gt.tum")
-    e = dict((round(t, 3), v) for t, v in errors(d, ini, m))
+    e = dict((round(t, 3), v) for t, v in e)
     before = [(t, x, y) for t, x, y in gt if t < T and round(t, 3) in e]
     out = {}
     for t, x, y in gt:
@@ -145,7 +144,7 @@ for ini in kidnap:
             det = [t for t in r if t >= T]
             rec = recovery(e, down, lambda t: 2 * ref)
             # Where the robot was never before (no pose within 0.1 m), no bound.
-            place = place_errors(d, ini, m, T)
+            place = place_errors(tum(f"{d}/{ini}.gt.tum"), e, T)
             recPlace = recovery(e, down, lambda t: 2 * place.get(round(t, 3), math.inf))
             f = lambda v: "none" if v is None else f"{v:.1f}"
             print(f"| {m} | {ini} | {s} | {sum(1 for t in r if t < T)} | "

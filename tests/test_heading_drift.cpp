@@ -43,16 +43,9 @@ auto driftOf = [](TParticle& p, size_t) -> double& { return p.drift; };
 rfir::slam::TSlamConfig longConfig(
     const std::string& method,
     const std::vector<std::pair<std::string, std::string>>& edits = {}) {
-    std::ifstream in(std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + method +
-                     "_long.ini");
-    std::stringstream text;
-    text << in.rdbuf();
-    mrpt::config::CConfigFileMemory f(text.str());
-    for (const auto& [sk, v] : edits) {
-        const auto dot = sk.find('.');
-        f.write(sk.substr(0, dot), sk.substr(dot + 1), v);
-    }
-    return rfir::slam::loadSlamConfig(f, method);
+    return configFromIni(
+        std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_" + method + "_long.ini", method,
+        edits);
 }
 
 rfir::sim::TSimConfig stockSimIni(const std::string& name) {

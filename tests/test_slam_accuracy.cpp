@@ -226,6 +226,22 @@ TEST(SlamKidnap, NoResetOnNormalRuns) {
     }
 }
 
+namespace {
+/** Seconds from the put-down to the first pose after which every error for
+ * 5 s is under its bound (bound[i] < 0: none at that pose); -1 if never. */
+double recoveryTime(const std::vector<rfir::eval::TPoseError>& pp, double down,
+                    const std::vector<double>& bound) {
+    for (size_t i = 0; i < pp.size(); i++) {
+        if (pp[i].t < down) continue;
+        bool ok = true;
+        for (size_t j = i; j < pp.size() && pp[j].t <= pp[i].t + 5; j++)
+            ok = ok && (bound[j] < 0 || pp[j].dist < bound[j]);
+        if (ok) return pp[i].t - down;
+    }
+    return -1;
+}
+}  // namespace
+
 // The stock kidnap INIs (60 mm and 300 mm): the first reset comes within 5 s
 // of the put-down, none before the kidnapping, and within 5 s of the
 // put-down the robot error stays under 2 x the same run's mean error (from
@@ -246,15 +262,8 @@ TEST(SlamKidnap, RecoversWithin5sOnStockInis) {
             for (const auto& pe : n.robotErrors.perPose)
                 if (pe.t >= down) after.push_back(pe.dist);
             const double level = 2 * mean(after);
-            double recovered = -1;  // first t after the put-down staying under level 5 s
-            const auto& pp = r.robotErrors.perPose;
-            for (size_t i = 0; i < pp.size() && recovered < 0; i++) {
-                if (pp[i].t < down) continue;
-                bool ok = true;
-                for (size_t j = i; j < pp.size() && pp[j].t <= pp[i].t + 5; j++)
-                    ok = ok && pp[j].dist < level;
-                if (ok) recovered = pp[i].t - down;
-            }
+            const std::vector<double> bound(r.robotErrors.perPose.size(), level);
+            const double recovered = recoveryTime(r.robotErrors.perPose, down, bound);
             const auto& rt = r.run.resetTimes;
             std::printf("%s %s: resets at", ini, m);
             for (double t : rt) std::printf(" %.1f", t);
@@ -301,14 +310,7 @@ TEST(SlamKidnap, RecoversToTheSamePlacesErrorWithin5s300mm) {
                     if (d2 <= best) best = d2, bound[i] = 2 * pp[j].dist;
                 }
             }
-            double recovered = -1;
-            for (size_t i = 0; i < pp.size() && recovered < 0; i++) {
-                if (pp[i].t < down || bound[i] < 0) continue;
-                bool ok = true;
-                for (size_t j = i; j < pp.size() && pp[j].t <= pp[i].t + 5; j++)
-                    ok = ok && (bound[j] < 0 || pp[j].dist < bound[j]);
-                if (ok) recovered = pp[i].t - down;
-            }
+            const double recovered = recoveryTime(pp, down, bound);
             std::printf("seed %llu %s: recovered %.1f s after the put-down\n",
                         (unsigned long long)seed, m, recovered);
             EXPECT_EQ(r.run.resets, 1u) << "seed " << seed << " " << m;

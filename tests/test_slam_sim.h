@@ -23,13 +23,12 @@ inline std::vector<rfir::slam::TSlamInput> toInputs(const rfir::sim::TSimOutput&
     return rfir::slam::inputsFromSteps(out.steps);
 }
 
-/** The stock INI of `method`, with optional "section.key = value" edits. */
-inline rfir::slam::TSlamConfig stockConfig(
-    const std::string& method,
-    const std::vector<std::pair<std::string, std::string>>& edits = {}) {
-    // A memory copy: CConfigFile would write the edits back into the stock INI.
-    std::ifstream in(
-        rfir::common::slamIniPath(std::string(RFIR_SOURCE_DIR) + "/config_ini", method));
+/** An INI file with `section.key` edits, loaded for `method`. */
+inline rfir::slam::TSlamConfig configFromIni(
+    const std::string& path, const std::string& method,
+    const std::vector<std::pair<std::string, std::string>>& edits) {
+    // A memory copy: CConfigFile would write the edits back into the INI.
+    std::ifstream in(path);
     std::stringstream text;
     text << in.rdbuf();
     mrpt::config::CConfigFileMemory f(text.str());
@@ -38,6 +37,15 @@ inline rfir::slam::TSlamConfig stockConfig(
         f.write(sk.substr(0, dot), sk.substr(dot + 1), v);
     }
     return rfir::slam::loadSlamConfig(f, method);
+}
+
+/** The stock INI of `method`, with optional "section.key = value" edits. */
+inline rfir::slam::TSlamConfig stockConfig(
+    const std::string& method,
+    const std::vector<std::pair<std::string, std::string>>& edits = {}) {
+    return configFromIni(
+        rfir::common::slamIniPath(std::string(RFIR_SOURCE_DIR) + "/config_ini", method),
+        method, edits);
 }
 
 struct TResult {

@@ -249,7 +249,8 @@ struct CRFIDTagParticleMapImpl {
     }
 
     /** Places `e` again over one reader's square: its former reads no longer
-     * count for it, nor does its estimate weigh the robot in this visit. */
+     * count for it, and the rest of this visit weighs the robot against the
+     * new placement, not the refuted one. */
     static void reseatTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
                           const ReaderArea& r, rfir::models::TRandom& rng) {
         initTag(m, e, robot, r, rng);
@@ -283,13 +284,13 @@ struct CRFIDTagParticleMapImpl {
                 // from the observation), weighed by any other reader.
                 Entry e;
                 e.id = id;
+                e.support = 1;  // the read that places it
                 e.estimator = makeEstimator(m.insertionOptions);
                 initTag(m, e, robot, areas[0], rng);
                 it = m.m_tags.emplace(id, std::move(e)).first;
                 first = 1;
             }
             Entry& e = it->second;
-            if (first == 1) e.support = 1;
             // Judged against the estimate before this instant's reads move it.
             const size_t reseat = judgeReads(m, e, robot, areas, first, det);
             markRead(m, e, before, m.m_track[0], areas.size());

@@ -223,6 +223,27 @@ TEST(ReseatContradicted, GhostMappedTagsArePlacedAgain) {
         }
 }
 
+// Dead reckoning maps from the odometry poses with no correction, so the
+// reseating is off for it whatever the INI says: with it on, every tag the
+// drifted odometry met again was placed again at the drifted pose (the
+// experiments' kidnap row: tag error 104 -> 2177 mm over 8 seeds).
+TEST(ReseatContradicted, DeadReckoningMapsWithoutIt) {
+    const uint64_t seed = 1;
+    const auto sim = rfir::sim::simulate(stockSimIni("sim_kidnap.ini"), seed);
+    const auto on = runMethod(
+        sim, stockConfig("odometry", {{"tagmap.reseat_contradicted", "true"}}), seed);
+    const auto off = runMethod(
+        sim, stockConfig("odometry", {{"tagmap.reseat_contradicted", "false"}}), seed);
+    std::cout << "tags " << 1e3 * on.tags << " mm (option on), " << 1e3 * off.tags
+              << " mm (off)\n";
+    ASSERT_EQ(on.run.map.size(), off.run.map.size());
+    for (size_t i = 0; i < on.run.map.size(); i++) {
+        EXPECT_EQ(on.run.map[i].x, off.run.map[i].x) << on.run.map[i].id;
+        EXPECT_EQ(on.run.map[i].y, off.run.map[i].y) << on.run.map[i].id;
+        EXPECT_EQ(on.run.map[i].reseats, 0u) << on.run.map[i].id;
+    }
+}
+
 // The floor bar with the long profiles (bench_floor_30x20, seeds 1-2):
 // no reset, PS's max error below the odometry's, and each method's mean
 // below its stock INI's (measured PF 398 / 829 mm, PS 526 / 1032 mm against

@@ -2,7 +2,10 @@
 // a row contradict than agreed with it since it was placed is placed again
 // at the read (a tag first mapped from a ghost read, or moved); a tag with
 // many agreeing reads is not moved by a few contradicting ones (the robot
-// may be the one that is off); the counts survive serialization.
+// may be the one that is off); with large readers a read whose square
+// misses the tag by more than a margin contradicts it too; a read the
+// agreeing ones out-vote does not move the tag; the counts survive
+// serialization.
 #include "test_tagmaps_sim.h"
 
 #include <gtest/gtest.h>
@@ -32,6 +35,38 @@ double distTo(const CRFIDTagParticleMap& m, const std::string& id, double x, dou
 
 /** A ghost read places "G" 0.4 m from its true spot (1.1, 0); then the robot
  * reads it three times where it really is. */
+/** One 300 mm reader 0.4 m ahead of the robot reads `tag`. */
+rfir::obs::CObservationRFIDReaders::Ptr read300Of(const std::string& tag) {
+    auto o = readOf(tag);
+    o->readings[0].reader = reader("B", 0.4, 0.0, 0.15);
+    return o;
+}
+
+/** A ghost of a 300 mm reader places "G" over [0.25, 0.55]; it lies at
+ * about 0.75, where three reads then find it. */
+CRFIDTagParticleMap ghostThenTrue300(double margin) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.contradictMargin = margin;
+    m.insertionOptions.seed = 7;
+    m.insertObservation(*read300Of("G"), pose3({0.0, 0.0, 0.0}));  // the ghost
+    for (int i = 0; i < 3; i++)
+        m.insertObservation(*read300Of("G"), pose3({0.35 + 0.005 * i, 0.0, 0.0}));
+    return m;
+}
+
+/** "T" read five times from one spot, then once from 0.3 m further on. */
+double dragByOneFarRead(bool hold) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.holdOutvoted = hold;
+    m.insertionOptions.seed = 7;
+    for (int i = 0; i < 5; i++) m.insertObservation(*readOf("T"), pose3({1.0, 0.0, 0.0}));
+    const auto before = m.getTag("T")->estimate.mean;
+    m.insertObservation(*readOf("T"), pose3({1.3, 0.0, 0.0}));
+    EXPECT_EQ(m.getTag("T")->contradicted, 1u);
+    EXPECT_EQ(m.getTag("T")->reseats, 0u);
+    return distTo(m, "T", before.x, before.y);
+}
+
 CRFIDTagParticleMap ghostThenTrue(bool reseat) {
     CRFIDTagParticleMap m;
     m.insertionOptions.reseatContradicted = reseat;
@@ -57,6 +92,28 @@ TEST(TagMapReseat, GhostPlacedTagIsPlacedAgainByTheReadsThatContradictIt) {
     EXPECT_EQ(off.getTag("G")->reseats, 0u);
     EXPECT_EQ(off.getTag("G")->contradicted, 3u);
     EXPECT_GT(distTo(off, "G", 1.1, 0.0), 0.3);
+}
+
+// The outlier floor's test scales with the reader: a 300 mm reader's read
+// contradicts a tag only 0.69 m from its centre, so a ghost-placed tag 0.3 m
+// off was never reseated. contradict_margin (stock 0.1 m) also counts a
+// read whose square misses the tag's estimate by more than that.
+TEST(TagMapReseat, MarginCatchesTheGhostsOfLargeReaders) {
+    const auto on = ghostThenTrue300(0.1);
+    EXPECT_EQ(on.getTag("G")->reseats, 1u);
+    EXPECT_LT(distTo(on, "G", 0.75, 0.0), 0.15);  // inside the true square
+    const auto off = ghostThenTrue300(-1);
+    EXPECT_EQ(off.getTag("G")->reseats, 0u);
+    EXPECT_EQ(off.getTag("G")->contradicted, 0u);
+    EXPECT_GT(distTo(off, "G", 0.75, 0.0), 0.15);
+}
+
+// hold_outvoted (stock): a read that contradicts a tag the agreeing reads
+// still out-vote does not update it; without it one far read drags the
+// tag's particles to the edge of its cloud nearest the read.
+TEST(TagMapReseat, OutvotedReadDoesNotDragTheTag) {
+    EXPECT_EQ(dragByOneFarRead(true), 0.0);
+    EXPECT_GT(dragByOneFarRead(false), 0.01);
 }
 
 TEST(TagMapReseat, WellSupportedTagOutlastsAsManyContradictingReads) {
@@ -91,9 +148,13 @@ TEST(TagMapReseat, CountsAndOptionSurviveSerialization) {
     buf.Seek(0);
     CRFIDTagParticleMap back;
     back.insertionOptions.reseatContradicted = false;
+    back.insertionOptions.contradictMargin = -1;
+    back.insertionOptions.holdOutvoted = false;
     auto in = mrpt::serialization::archiveFrom(buf);
     in >> back;
     EXPECT_TRUE(back.insertionOptions.reseatContradicted);
+    EXPECT_EQ(back.insertionOptions.contradictMargin, 0.1);
+    EXPECT_TRUE(back.insertionOptions.holdOutvoted);
     const auto* a = m.getTag("G");
     const auto* b = back.getTag("G");
     ASSERT_NE(b, nullptr);

@@ -232,14 +232,22 @@ struct CRFIDTagParticleMapImpl {
      * read, or moved), or areas.size(). */
     static size_t judgeReads(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
                              const std::vector<ReaderArea>& areas, size_t first,
-                             const rfir::models::DetectionLikelihood& det) {
+                             const rfir::models::DetectionLikelihood& det,
+                             std::vector<char>& outvoted) {
+        const auto& io = m.insertionOptions;
         size_t reseat = areas.size();
+        outvoted.assign(areas.size(), 0);
         for (size_t k = first; k < areas.size(); k++) {
-            if (!det.contradicts(robot, areas[k], e.estimate.mean)) {
+            const auto& tag = e.estimate.mean;
+            if (!det.contradicts(robot, areas[k], tag) &&
+                !(io.contradictMargin >= 0 &&
+                  det.outsideSquare(robot, areas[k], tag) > io.contradictMargin)) {
                 e.support++;
                 e.againstRun = 0;
                 continue;
             }
+            // Still out-voted by the reads that agreed: not let to drag the tag.
+            outvoted[k] = io.holdOutvoted && e.againstRun + 1 <= e.support;
             e.contradicted++;
             if (++e.againstRun > e.support && reseat == areas.size() &&
                 m.insertionOptions.reseatContradicted)
@@ -292,13 +300,13 @@ struct CRFIDTagParticleMapImpl {
             }
             Entry& e = it->second;
             // Judged against the estimate before this instant's reads move it.
-            const size_t reseat = judgeReads(m, e, robot, areas, first, det);
+            std::vector<char> outvoted;
+            const size_t reseat = judgeReads(m, e, robot, areas, first, det, outvoted);
             markRead(m, e, before, m.m_track[0], areas.size());
-            std::vector<ReaderArea> rest(areas.begin() + first, areas.end());
-            if (reseat < areas.size()) {
-                reseatTag(m, e, robot, areas[reseat], rng);
-                rest.erase(rest.begin() + long(reseat - first));
-            }
+            std::vector<ReaderArea> rest;
+            for (size_t k = first; k < areas.size(); k++)
+                if (k != reseat && !outvoted[k]) rest.push_back(areas[k]);
+            if (reseat < areas.size()) reseatTag(m, e, robot, areas[reseat], rng);
             if (!rest.empty()) {
                 const bool drawn =
                     m.insertionOptions.tagRobotPose == TTagRobotPose::Samples;

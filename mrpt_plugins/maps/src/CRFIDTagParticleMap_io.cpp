@@ -169,8 +169,9 @@ void readEntries(CArchive& a, TABLE& t, uint8_t version) {
 uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
     // 3: estimators by registry name with their own compact state; 4: the
     // outlier mixture's options and the contradicted-read counts; 5: the
-    // reseat counts and option (reseat_contradicted).
-    return 5;
+    // reseat counts and option (reseat_contradicted); 6: contradict_margin
+    // and hold_outvoted.
+    return 6;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
@@ -195,6 +196,7 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << io.spreadCommitTravel;
     out << lo.detection.outlierWeight << lo.detection.outlierLogFloor;  // v4
     out << io.reseatContradicted;                                       // v5
+    out << io.contradictMargin << io.holdOutvoted;                      // v6
     out << m_landmarkNames;
     out.WriteAs<uint64_t>(m_track[0].steps);
     out.WriteAs<uint64_t>(m_track[1].steps);
@@ -211,7 +213,8 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
         case 2:
         case 3:
         case 4:
-        case 5: {
+        case 5:
+        case 6: {
             in >> genericMapParams;
             auto& io = insertionOptions;
             if (version >= 3)
@@ -262,6 +265,16 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                 in >> lo.detection.outlierWeight >> lo.detection.outlierLogFloor;
             // Maps written before it behaved without it.
             io.reseatContradicted = version >= 5 && readStrictBool(in, kWhat);
+            io.contradictMargin = -1;
+            io.holdOutvoted = false;
+            if (version >= 6) {
+                in >> io.contradictMargin;
+                io.holdOutvoted = readStrictBool(in, kWhat);
+                if (!(io.contradictMargin >= -1 && io.contradictMargin <= 10))
+                    throw std::runtime_error(
+                        "CRFIDTagParticleMap: contradict_margin read from the stream "
+                        "is outside [-1, 10]");
+            }
             m_landmarkNames.resize(
                 rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
             for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);

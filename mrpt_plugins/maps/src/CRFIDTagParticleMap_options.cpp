@@ -36,7 +36,9 @@ const std::vector<std::string>& insertionKeys() {
                                                "seed",
                                                "tag_robot_pose",
                                                "spread_commit_travel",
-                                               "reseat_contradicted"};
+                                               "reseat_contradicted",
+                                               "contradict_margin",
+                                               "hold_outvoted"};
     return k;
 }
 }  // namespace
@@ -70,6 +72,9 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
     spreadCommitTravel = sec.getDouble("spread_commit_travel", spreadCommitTravel,
                                        TRange::closed(0, 100000));
     reseatContradicted = sec.getBool("reseat_contradicted", reseatContradicted);
+    contradictMargin =
+        sec.getDouble("contradict_margin", contradictMargin, TRange::closed(-1, 10));
+    holdOutvoted = sec.getBool("hold_outvoted", holdOutvoted);
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
@@ -84,7 +89,9 @@ void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) c
       << "tag_robot_pose      = " << kRobotPoseNames[static_cast<size_t>(tagRobotPose)]
       << "\n"
       << "spread_commit_travel = " << spreadCommitTravel << "\n"
-      << "reseat_contradicted = " << (reseatContradicted ? "true" : "false") << "\n";
+      << "reseat_contradicted = " << (reseatContradicted ? "true" : "false") << "\n"
+      << "contradict_margin   = " << contradictMargin << "\n"
+      << "hold_outvoted       = " << (holdOutvoted ? "true" : "false") << "\n";
 }
 
 namespace {

@@ -2,6 +2,7 @@
  * readModel's e, then the noise model. */
 #include <rfir/models/detection_likelihood.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rfir::models {
@@ -23,6 +24,13 @@ bool DetectionLikelihood::contradicts(const mrpt::math::TPose2D& robot,
                                       const mrpt::math::TPoint2D& tag) const {
     const auto e = readModel(robot, r.x, r.y, tag);
     return baseLogLikelihoodOffset(e.x, e.y, r.halfX, r.halfY) < m_p.outlierLogFloor;
+}
+
+double DetectionLikelihood::outsideSquare(const mrpt::math::TPose2D& robot,
+                                          const ReaderArea& r,
+                                          const mrpt::math::TPoint2D& tag) {
+    const auto e = readModel(robot, r.x, r.y, tag);
+    return std::max(std::abs(e.x) - r.halfX, std::abs(e.y) - r.halfY);
 }
 
 }  // namespace rfir::models

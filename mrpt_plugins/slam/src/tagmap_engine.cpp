@@ -55,11 +55,13 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         map_.clear();
         map_.insertionOptions = cfg_.tagmap->insertion;
         // Dead reckoning maps from the odometry poses with no correction:
-        // placing a contradicted tag again is a correction (it followed the
-        // drift: after the kidnapping of the experiments' `kidnap` row its
-        // tags moved 0.1 -> 2.2 m off).
-        if (cfg_.method() == TMethod::Odometry)
+        // placing a contradicted tag again, or holding it against a read, is
+        // a correction (with the first, after the kidnapping of the
+        // experiments' `kidnap` row its tags moved 0.1 -> 2.2 m off).
+        if (cfg_.method() == TMethod::Odometry) {
             map_.insertionOptions.reseatContradicted = false;
+            map_.insertionOptions.holdOutvoted = false;
+        }
         map_.likelihoodOptions = cfg_.tagmap->likelihood;
         map_.setRandomSeed(rng_.drawUniform64bit());
         map_.setLandmarkNames(hdr_.rbLandmarkNames);

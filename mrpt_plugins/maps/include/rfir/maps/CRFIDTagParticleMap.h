@@ -221,6 +221,15 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         /** reseat_contradicted: a tag that more reads in a row contradict
          * than agreed with it since it was placed is placed again. */
         bool reseatContradicted = true;
+        /** contradict_margin (m): a read also contradicts a tag whose
+         * estimate lies this far outside the read's reader square (negative:
+         * only the outlier floor's test). The floor's test scales with the
+         * reader: with 300 mm readers it calls a tag 0.5 m off consistent. */
+        double contradictMargin = 0.1;
+        /** hold_outvoted: a read that contradicts a tag while the tag's
+         * support still outweighs the contradicting run does not update it
+         * (one ghost read does not drag a tag). */
+        bool holdOutvoted = true;
         /** spread_commit_travel (m): samples_visit makes the spread permanent
          * at the first new visit after this much robot path since the tag's
          * first read (0: the second visit, which with a ring of readers can be

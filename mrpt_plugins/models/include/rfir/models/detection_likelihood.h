@@ -86,6 +86,10 @@ class DetectionLikelihood {
      * call it a random reading rather than a read of a tag at `tag`. */
     bool contradicts(const mrpt::math::TPose2D& robot, const ReaderArea& r,
                      const mrpt::math::TPoint2D& tag) const;
+    /** How far (m) `tag` lies outside the reader's square, along the
+     * farther axis of the reader's frame; <= 0 inside. */
+    static double outsideSquare(const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                                const mrpt::math::TPoint2D& tag);
 
   private:
     DetectionModelParams m_p;

@@ -33,8 +33,6 @@ double distTo(const CRFIDTagParticleMap& m, const std::string& id, double x, dou
     return std::hypot(mean.x - x, mean.y - y);
 }
 
-/** A ghost read places "G" 0.4 m from its true spot (1.1, 0); then the robot
- * reads it three times where it really is. */
 /** One 300 mm reader 0.4 m ahead of the robot reads `tag`. */
 rfir::obs::CObservationRFIDReaders::Ptr read300Of(const std::string& tag) {
     auto o = readOf(tag);
@@ -42,16 +40,23 @@ rfir::obs::CObservationRFIDReaders::Ptr read300Of(const std::string& tag) {
     return o;
 }
 
+/** A ghost read of "G" by `read` with the robot at ghostX, then three true
+ * reads from trueX on; `setup` sets the map's options. */
+template <class Read, class Setup>
+CRFIDTagParticleMap ghostThen(Read read, double ghostX, double trueX, Setup setup) {
+    CRFIDTagParticleMap m;
+    setup(m.insertionOptions);
+    m.insertionOptions.seed = 7;
+    m.insertObservation(*read("G"), pose3({ghostX, 0.0, 0.0}));  // the ghost
+    for (int i = 0; i < 3; i++)
+        m.insertObservation(*read("G"), pose3({trueX + 0.005 * i, 0.0, 0.0}));
+    return m;
+}
+
 /** A ghost of a 300 mm reader places "G" over [0.25, 0.55]; it lies at
  * about 0.75, where three reads then find it. */
 CRFIDTagParticleMap ghostThenTrue300(double margin) {
-    CRFIDTagParticleMap m;
-    m.insertionOptions.contradictMargin = margin;
-    m.insertionOptions.seed = 7;
-    m.insertObservation(*read300Of("G"), pose3({0.0, 0.0, 0.0}));  // the ghost
-    for (int i = 0; i < 3; i++)
-        m.insertObservation(*read300Of("G"), pose3({0.35 + 0.005 * i, 0.0, 0.0}));
-    return m;
+    return ghostThen(read300Of, 0.0, 0.35, [&](auto& o) { o.contradictMargin = margin; });
 }
 
 /** "T" read five times from one spot, then once from 0.3 m further on. */
@@ -67,14 +72,10 @@ double dragByOneFarRead(bool hold) {
     return distTo(m, "T", before.x, before.y);
 }
 
+/** A ghost read places "G" 0.4 m from its true spot (1.1, 0); then the robot
+ * reads it three times where it really is. */
 CRFIDTagParticleMap ghostThenTrue(bool reseat) {
-    CRFIDTagParticleMap m;
-    m.insertionOptions.reseatContradicted = reseat;
-    m.insertionOptions.seed = 7;
-    m.insertObservation(*readOf("G"), pose3({0.6, 0.0, 0.0}));  // the ghost
-    for (int i = 0; i < 3; i++)
-        m.insertObservation(*readOf("G"), pose3({1.0 + 0.005 * i, 0.0, 0.0}));
-    return m;
+    return ghostThen(readOf, 0.6, 1.0, [&](auto& o) { o.reseatContradicted = reseat; });
 }
 }  // namespace
 

@@ -225,33 +225,40 @@ struct CRFIDTagParticleMapImpl {
         return {r.x, r.y, r.halfX, r.halfY};
     }
 
-    /** Counts the reads of `e` at this instant (areas from `first` on) that
-     * its estimate contradicts; returns the index of the read at which more
-     * reads in a row have contradicted the tag than agreed with it since it
-     * was placed (it is then placed again there: a tag mapped from a ghost
-     * read, or moved), or areas.size(). */
+    /** Judges the reads of `e` at this instant (areas from `first` on)
+     * against its estimate: a read contradicts it when the model without the
+     * mixture gives it less than outlier_log_floor, or when the estimate lies
+     * more than contradict_margin outside the read's square. Returns the index
+     * of the read at which more reads in a row have contradicted the tag than
+     * agreed with it since it was placed (it is then placed again there: a
+     * tag mapped from a ghost read, or moved), or areas.size(); `update`
+     * gets the reads that update the tag: not that one, nor (hold_outvoted)
+     * a contradicting read the agreeing ones still out-vote. */
     static size_t judgeReads(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
                              const std::vector<ReaderArea>& areas, size_t first,
                              const rfir::models::DetectionLikelihood& det,
-                             std::vector<char>& outvoted) {
+                             std::vector<ReaderArea>& update) {
         const auto& io = m.insertionOptions;
+        const auto& tag = e.estimate.mean;
         size_t reseat = areas.size();
-        outvoted.assign(areas.size(), 0);
+        update.clear();
         for (size_t k = first; k < areas.size(); k++) {
-            const auto& tag = e.estimate.mean;
             if (!det.contradicts(robot, areas[k], tag) &&
                 !(io.contradictMargin >= 0 &&
                   det.outsideSquare(robot, areas[k], tag) > io.contradictMargin)) {
                 e.support++;
                 e.againstRun = 0;
+                update.push_back(areas[k]);
                 continue;
             }
-            // Still out-voted by the reads that agreed: not let to drag the tag.
-            outvoted[k] = io.holdOutvoted && e.againstRun + 1 <= e.support;
             e.contradicted++;
-            if (++e.againstRun > e.support && reseat == areas.size() &&
-                m.insertionOptions.reseatContradicted)
+            if (++e.againstRun <= e.support && io.holdOutvoted) continue;
+            if (e.againstRun > e.support && reseat == areas.size() &&
+                io.reseatContradicted) {
                 reseat = k;
+                continue;
+            }
+            update.push_back(areas[k]);
         }
         return reseat;
     }
@@ -300,12 +307,9 @@ struct CRFIDTagParticleMapImpl {
             }
             Entry& e = it->second;
             // Judged against the estimate before this instant's reads move it.
-            std::vector<char> outvoted;
-            const size_t reseat = judgeReads(m, e, robot, areas, first, det, outvoted);
-            markRead(m, e, before, m.m_track[0], areas.size());
             std::vector<ReaderArea> rest;
-            for (size_t k = first; k < areas.size(); k++)
-                if (k != reseat && !outvoted[k]) rest.push_back(areas[k]);
+            const size_t reseat = judgeReads(m, e, robot, areas, first, det, rest);
+            markRead(m, e, before, m.m_track[0], areas.size());
             if (reseat < areas.size()) reseatTag(m, e, robot, areas[reseat], rng);
             if (!rest.empty()) {
                 const bool drawn =

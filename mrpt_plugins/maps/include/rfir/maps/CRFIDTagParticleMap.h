@@ -84,7 +84,9 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         double spreadTravel = 0;  //!< RFID track travel (m) at the first read
         uint64_t detections = 0;  //!< number of (reader, tag) reads
         /** Of these, reads the tag's estimate at the time contradicted
-         * (DetectionLikelihood::contradicts; map.txt's last column). */
+         * (DetectionLikelihood::contradicts, or the estimate more than
+         * contradict_margin outside the reader's square; map.txt's last
+         * column). */
         uint64_t contradicted = 0;
         /** Reads that agreed with it since it was (last) placed, the reads
          * in a row that contradicted it since, and how often it was placed

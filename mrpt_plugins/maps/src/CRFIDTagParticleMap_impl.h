@@ -243,9 +243,7 @@ struct CRFIDTagParticleMapImpl {
         size_t reseat = areas.size();
         update.clear();
         for (size_t k = first; k < areas.size(); k++) {
-            if (!det.contradicts(robot, areas[k], tag) &&
-                !(io.contradictMargin >= 0 &&
-                  det.outsideSquare(robot, areas[k], tag) > io.contradictMargin)) {
+            if (!det.contradicts(robot, areas[k], tag, io.contradictMargin)) {
                 e.support++;
                 e.againstRun = 0;
                 update.push_back(areas[k]);

@@ -22,15 +22,18 @@ double DetectionLikelihood::logLikelihood(const mrpt::math::TPose2D& robot, doub
 bool DetectionLikelihood::contradicts(const mrpt::math::TPose2D& robot,
                                       const ReaderArea& r,
                                       const mrpt::math::TPoint2D& tag) const {
-    const auto e = readModel(robot, r.x, r.y, tag);
-    return baseLogLikelihoodOffset(e.x, e.y, r.halfX, r.halfY) < m_p.outlierLogFloor;
+    return contradicts(robot, r, tag, -1);
 }
 
-double DetectionLikelihood::outsideSquare(const mrpt::math::TPose2D& robot,
-                                          const ReaderArea& r,
-                                          const mrpt::math::TPoint2D& tag) {
+bool DetectionLikelihood::contradicts(const mrpt::math::TPose2D& robot,
+                                      const ReaderArea& r,
+                                      const mrpt::math::TPoint2D& tag,
+                                      double margin) const {
     const auto e = readModel(robot, r.x, r.y, tag);
-    return std::max(std::abs(e.x) - r.halfX, std::abs(e.y) - r.halfY);
+    if (baseLogLikelihoodOffset(e.x, e.y, r.halfX, r.halfY) < m_p.outlierLogFloor)
+        return true;
+    return margin >= 0 &&
+           std::max(std::abs(e.x) - r.halfX, std::abs(e.y) - r.halfY) > margin;
 }
 
 }  // namespace rfir::models

@@ -86,10 +86,11 @@ class DetectionLikelihood {
      * call it a random reading rather than a read of a tag at `tag`. */
     bool contradicts(const mrpt::math::TPose2D& robot, const ReaderArea& r,
                      const mrpt::math::TPoint2D& tag) const;
-    /** How far (m) `tag` lies outside the reader's square, along the
-     * farther axis of the reader's frame; <= 0 inside. */
-    static double outsideSquare(const mrpt::math::TPose2D& robot, const ReaderArea& r,
-                                const mrpt::math::TPoint2D& tag);
+    /** The same, or `tag` lies more than `margin` (m; negative: off) outside
+     * the reader's square along the farther axis of the reader's frame
+     * ([tagmap] contradict_margin); one readModel for both tests. */
+    bool contradicts(const mrpt::math::TPose2D& robot, const ReaderArea& r,
+                     const mrpt::math::TPoint2D& tag, double margin) const;
 
   private:
     DetectionModelParams m_p;

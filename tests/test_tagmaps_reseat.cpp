@@ -4,8 +4,8 @@
 // many agreeing reads is not moved by a few contradicting ones (the robot
 // may be the one that is off); with large readers a read whose square
 // misses the tag by more than a margin contradicts it too; a read the
-// agreeing ones out-vote does not move the tag; the counts survive
-// serialization.
+// agreeing ones out-vote does not move the tag; a reseated tag weighs the
+// robot only from its next visit on; the counts survive serialization.
 #include "test_tagmaps_sim.h"
 
 #include <gtest/gtest.h>
@@ -163,4 +163,39 @@ TEST(TagMapReseat, CountsAndOptionSurviveSerialization) {
     EXPECT_EQ(b->againstRun, a->againstRun);
     EXPECT_EQ(b->reseats, a->reseats);
     EXPECT_EQ(b->contradicted, a->contradicted);
+}
+
+// A reseated tag starts over as a tag on its first visit: its placement is
+// the robot's own pose, so the rest of that visit must not weigh the robot
+// against it (until 2026-12-05 it did, the double counting
+// revisit_min_travel keeps out); a later visit does.
+TEST(TagMapReseat, ReseatedTagWeighsTheRobotFromTheNextVisitOn) {
+    CRFIDTagParticleMap m;
+    m.likelihoodOptions.robotUpdate = rfir::maps::TRobotUpdatePolicy::RevisitAll;
+    m.likelihoodOptions.revisitMinTravel = 1;
+    m.insertionOptions.seed = 7;
+    const auto weighing = [&] {
+        CRFIDTagParticleMap::TRobotReads r;
+        EXPECT_TRUE(m.resolveRobotReads(*readOf("G"), r));
+        return r.reads.size();
+    };
+    // Drives 2 m (to x and back) reading only "X": the next read of "G"
+    // starts a new visit.
+    const auto away = [&](double x) {
+        for (int i = 0; i <= 20; i++)
+            m.insertObservation(*readOf("X"),
+                                pose3({x + 0.1 * (i <= 10 ? i : 20 - i), 0, 0}));
+    };
+    m.insertObservation(*readOf("G"), pose3({0.6, 0.0, 0.0}));  // a ghost places "G"
+    away(3.0);
+    EXPECT_EQ(weighing(), 1u);   // the second visit weighs the robot
+    for (int i = 0; i < 2; i++)  // two true reads: the second reseats "G"
+        m.insertObservation(*readOf("G"), pose3({1.0 + 0.005 * i, 0.0, 0.0}));
+    ASSERT_EQ(m.getTag("G")->reseats, 1u);
+    EXPECT_EQ(weighing(), 0u);  // the rest of this visit does not
+    m.insertObservation(*readOf("G"), pose3({1.01, 0.0, 0.0}));
+    EXPECT_EQ(weighing(), 0u);
+    away(3.0);
+    EXPECT_EQ(weighing(), 1u);  // the next visit does
+    EXPECT_LT(distTo(m, "G", 1.1, 0.0), 0.03);
 }

@@ -262,14 +262,20 @@ struct CRFIDTagParticleMapImpl {
     }
 
     /** Places `e` again over one reader's square: its former reads no longer
-     * count for it, and the rest of this visit weighs the robot against the
-     * new placement, not the refuted one. */
+     * count for it, and it starts over as a tag on its first visit: the
+     * placement comes from the robot's own pose, so the rest of this visit
+     * only refines it, and it weighs the robot from the next visit on (as a
+     * new tag does). Until 2026-12-05 the rest of the visit weighed the
+     * robot against it, the double counting revisit_min_travel keeps out:
+     * a 300 mm square places the tag up to 0.15 m off, and the reads of the
+     * pass turned the robot toward that (docs/slam.md, "Contradicted tags"). */
     static void reseatTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
                           const ReaderArea& r, rfir::models::TRandom& rng) {
         initTag(m, e, robot, r, rng);
         e.support = 1;
         e.againstRun = 0;
         e.reseats++;
+        e.visits = 1;
         e.visitStartEstimate = e.estimate;
         e.visitStartSample = e.sample;
     }

@@ -16,8 +16,9 @@ cd "$(dirname "$0")/.."
 BIN=${RFIR_BIN:-build/bin}
 seeds=3
 methods="pf ps fastslam"
-inis="sim_faults_async sim_faults_bias sim_faults_combined sim_faults_dead_reader
-  sim_faults_ghost sim_faults_slips sim_explore_10x8_40min bench_floor_30x20"
+inis="sim_faults_async sim_faults_bias sim_faults_combined sim_faults_combined_300mm
+  sim_faults_dead_reader sim_faults_ghost sim_faults_slips sim_explore_10x8_40min
+  bench_floor_30x20"
 out=""
 sets=()
 while (($#)); do

@@ -249,6 +249,29 @@ TEST(ReseatContradicted, GhostsOfLargeReaders) {
     }
 }
 
+// The fault bar on the stock INI with 300 mm readers
+// (sim_faults_combined_300mm: biased odometry, slips, a dead reader, 0.5 %
+// ghosts 0.2-0.6 m off), seeds 1-3: PF- and PS-SLAM beat the odometry alone
+// and stay within 1.25 x FastSLAM's mean robot error, with zero resets.
+// Thresholds are the issue's.
+TEST(StockInis, LargeReaderFaultsWithinFastSlam) {
+    const auto c = stockSimIni("sim_faults_combined_300mm.ini");
+    for (uint64_t seed = 1; seed <= 3; seed++) {
+        const auto sim = rfir::sim::simulate(c, seed);
+        const double odo = runMethod(sim, stockConfig("odometry"), seed).robot;
+        const double fs = runMethod(sim, stockConfig("fastslam"), seed).robot;
+        for (const char* m : {"pf", "ps"}) {
+            const auto r = runMethod(sim, stockConfig(m), seed);
+            std::cout << "seed " << seed << " " << m << ": " << 1e3 * r.robot << " mm ("
+                      << r.run.resets << " resets), FastSLAM " << 1e3 * fs
+                      << " mm, odometry " << 1e3 * odo << " mm\n";
+            EXPECT_LT(r.robot, odo) << "seed " << seed << " " << m;
+            EXPECT_LE(r.robot, 1.25 * fs) << "seed " << seed << " " << m;
+            EXPECT_EQ(r.run.resets, 0u) << "seed " << seed << " " << m;
+        }
+    }
+}
+
 // Dead reckoning maps from the odometry poses with no correction, so the
 // reseating is off for it whatever the INI says: with it on, every tag the
 // drifted odometry met again was placed again at the drifted pose (the

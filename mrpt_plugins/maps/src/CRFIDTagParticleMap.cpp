@@ -110,6 +110,7 @@ void CRFIDTagParticleMap::internal_clear() {
     m_tags.clear();
     m_landmarks.clear();
     m_track[0] = m_track[1] = TSensorTrack();
+    m_notReadTravel = -1;
     m_lastTouched = 0;
     m_totalTouched = 0;
 }

@@ -337,6 +337,57 @@ struct CRFIDTagParticleMapImpl {
             }
             m.m_lastTouched++;
         }
+        if (m.insertionOptions.negativeInformation > 0) notRead(m, o, robot, det, rng);
+    }
+
+    /** negative_information: each polled reader large enough that did not
+     * read a recently read tag near it says the tag is not in its square
+     * (the smoother's negative factors, in the tag filters: docs/slam.md).
+     * Only recent tags (read in the last negative_window observations):
+     * their estimates come from this pass's robot, so the update does not
+     * carry a loop closure's robot error into the map. And only after the
+     * robot moved kNotReadTravel since the last such update: polls from one
+     * pose repeat one piece of evidence (a robot stopped, or carried with
+     * its odometry frozen, would otherwise push the tags it was reading out
+     * of its squares, 0.5^n after n polls). */
+    static constexpr double kNotReadTravel = 0.01;  // m
+    static void notRead(Map& m, const rfir::obs::CObservationRFIDReaders& o,
+                        const mrpt::math::TPose2D& robot,
+                        const rfir::models::DetectionLikelihood& det,
+                        rfir::models::TRandom& rng) {
+        const auto& io = m.insertionOptions;
+        std::vector<const rfir::obs::CObservationRFIDReaders::TReading*> polls;
+        for (const auto& rd : o.readings)
+            if (std::min(rd.reader.halfX, rd.reader.halfY) >= io.negativeMinHalfSize)
+                polls.push_back(&rd);
+        if (polls.empty()) return;
+        const double travel = m.m_track[0].travel;
+        if (m.m_notReadTravel >= 0 && travel - m.m_notReadTravel < kNotReadTravel) return;
+        m.m_notReadTravel = travel;
+        const uint64_t now = m.m_track[0].steps;
+        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
+        const double pd = io.negativeInformation;
+        for (auto& [id, e] : m.m_tags) {
+            if (now - e.lastReadStep >= io.negativeWindow) continue;
+            for (const auto* rd : polls) {
+                if (std::find(rd->tags.begin(), rd->tags.end(), id) != rd->tags.end())
+                    continue;
+                const ReaderArea a = area(rd->reader);
+                // Skip a tag whose estimate is far from the square: the
+                // update would multiply every particle by about 1.
+                const double dx = e.estimate.mean.x - (robot.x + c * a.x - s * a.y);
+                const double dy = e.estimate.mean.y - (robot.y + s * a.x + c * a.y);
+                const double reach = std::max(a.halfX, a.halfY) + 0.3;
+                if (dx * dx + dy * dy > reach * reach) continue;
+                update(
+                    m, e,
+                    [&](const mrpt::math::TPoint2D& p) {
+                        return std::log1p(
+                            -pd * std::exp(det.baseLogLikelihood(robot, c, s, a, p)));
+                    },
+                    rng);
+            }
+        }
     }
 
     static mrpt::math::TPose2D sensorPose(const mrpt::obs::CObservationBearingRange& o,

@@ -170,8 +170,9 @@ uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
     // 3: estimators by registry name with their own compact state; 4: the
     // outlier mixture's options and the contradicted-read counts; 5: the
     // reseat counts and option (reseat_contradicted); 6: contradict_margin
-    // and hold_outvoted.
-    return 6;
+    // and hold_outvoted; 7: negative_information, its window and minimum
+    // reader half-size.
+    return 7;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
@@ -197,6 +198,9 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << lo.detection.outlierWeight << lo.detection.outlierLogFloor;  // v4
     out << io.reseatContradicted;                                       // v5
     out << io.contradictMargin << io.holdOutvoted;                      // v6
+    out << io.negativeInformation;                                      // v7
+    out.WriteAs<uint64_t>(io.negativeWindow);
+    out << io.negativeMinHalfSize;
     out << m_landmarkNames;
     out.WriteAs<uint64_t>(m_track[0].steps);
     out.WriteAs<uint64_t>(m_track[1].steps);
@@ -214,7 +218,8 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
         case 3:
         case 4:
         case 5:
-        case 6: {
+        case 6:
+        case 7: {
             in >> genericMapParams;
             auto& io = insertionOptions;
             if (version >= 3)
@@ -275,10 +280,25 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                         "CRFIDTagParticleMap: contradict_margin read from the stream "
                         "is outside [-1, 10]");
             }
+            io.negativeInformation = 0;
+            io.negativeWindow = 30;
+            io.negativeMinHalfSize = 0.1;
+            if (version >= 7) {
+                in >> io.negativeInformation;
+                io.negativeWindow = in.ReadAs<uint64_t>();
+                in >> io.negativeMinHalfSize;
+                if (!(io.negativeInformation >= 0 && io.negativeInformation <= 0.99) ||
+                    io.negativeWindow < 1 || io.negativeWindow > 1000000 ||
+                    !(io.negativeMinHalfSize >= 0 && io.negativeMinHalfSize <= 10))
+                    throw std::runtime_error(
+                        "CRFIDTagParticleMap: negative_information, negative_window or "
+                        "negative_min_half_size read from the stream is out of range");
+            }
             m_landmarkNames.resize(
                 rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
             for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);
             m_track[0] = m_track[1] = TSensorTrack();
+            m_notReadTravel = -1;
             m_track[0].steps = in.ReadAs<uint64_t>();
             m_track[1].steps = in.ReadAs<uint64_t>();
             m_totalTouched = in.ReadAs<uint64_t>();

@@ -38,7 +38,10 @@ const std::vector<std::string>& insertionKeys() {
                                                "spread_commit_travel",
                                                "reseat_contradicted",
                                                "contradict_margin",
-                                               "hold_outvoted"};
+                                               "hold_outvoted",
+                                               "negative_information",
+                                               "negative_window",
+                                               "negative_min_half_size"};
     return k;
 }
 }  // namespace
@@ -75,6 +78,13 @@ void CRFIDTagParticleMap::TInsertionOptions::loadFromConfigFile(
     contradictMargin =
         sec.getDouble("contradict_margin", contradictMargin, TRange::closed(-1, 10));
     holdOutvoted = sec.getBool("hold_outvoted", holdOutvoted);
+    // p_d = 1 would give a particle inside an unread square weight 0.
+    negativeInformation = sec.getDouble("negative_information", negativeInformation,
+                                        TRange::closed(0, 0.99));
+    negativeWindow =
+        uint64_t(sec.getInt("negative_window", int64_t(negativeWindow), 1, 1000000));
+    negativeMinHalfSize = sec.getDouble("negative_min_half_size", negativeMinHalfSize,
+                                        TRange::closed(0, 10));
 }
 
 void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) const {
@@ -91,7 +101,10 @@ void CRFIDTagParticleMap::TInsertionOptions::dumpToTextStream(std::ostream& o) c
       << "spread_commit_travel = " << spreadCommitTravel << "\n"
       << "reseat_contradicted = " << (reseatContradicted ? "true" : "false") << "\n"
       << "contradict_margin   = " << contradictMargin << "\n"
-      << "hold_outvoted       = " << (holdOutvoted ? "true" : "false") << "\n";
+      << "hold_outvoted       = " << (holdOutvoted ? "true" : "false") << "\n"
+      << "negative_information = " << negativeInformation << "\n"
+      << "negative_window     = " << negativeWindow << "\n"
+      << "negative_min_half_size = " << negativeMinHalfSize << "\n";
 }
 
 namespace {

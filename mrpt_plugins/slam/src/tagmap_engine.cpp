@@ -151,7 +151,14 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                 t.end());
             any = any || !t.empty();
         }
-        if (any) insert(at, {copy});
+        if (!any) return;
+        // The copy lacks the known tags' reads: its polls would say those
+        // tags were not read.
+        auto& io = map_.insertionOptions;
+        const double pd = io.negativeInformation;
+        io.negativeInformation = 0;
+        insert(at, {copy});
+        io.negativeInformation = pd;
     }
     /** End of a weighing step with map_correction: the tags still correlated
      * with the robot follow its correction (tag_correlation.h). */

@@ -232,6 +232,15 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
          * support still outweighs the contradicting run does not update it
          * (one ghost read does not drag a tag). */
         bool holdOutvoted = true;
+        /** negative_information (p_d in [0, 0.99]; 0: off): after each RFID
+         * observation, a tag read in the last negative_window observations
+         * whose estimate lies near a polled reader (half-sizes >=
+         * negative_min_half_size) that did not read it is weighed by
+         * 1 - p_d x the step model's likelihood of a read: a tag that a
+         * large square did not read is not in it. */
+        double negativeInformation = 0;
+        uint64_t negativeWindow = 30;      //!< negative_window (observations)
+        double negativeMinHalfSize = 0.1;  //!< negative_min_half_size (m)
         /** spread_commit_travel (m): samples_visit makes the spread permanent
          * at the first new visit after this much robot path since the tag's
          * first read (0: the second visit, which with a ring of readers can be
@@ -303,6 +312,8 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         double lastX = 0, lastY = 0;
     };
     TSensorTrack m_track[2];
+    /** RFID track's travel at the last negative_information update (m). */
+    double m_notReadTravel = -1;
     size_t m_lastTouched = 0;
     uint64_t m_totalTouched = 0;
 

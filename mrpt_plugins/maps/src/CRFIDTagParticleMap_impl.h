@@ -268,7 +268,7 @@ struct CRFIDTagParticleMapImpl {
      * new tag does). Until 2026-12-05 the rest of the visit weighed the
      * robot against it, the double counting revisit_min_travel keeps out:
      * a 300 mm square places the tag up to 0.15 m off, and the reads of the
-     * pass turned the robot toward that (docs/slam.md, "Contradicted tags"). */
+     * pass turned the robot toward that (docs/slam.md, "Reseating contradicted tags"). */
     static void reseatTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
                           const ReaderArea& r, rfir::models::TRandom& rng) {
         initTag(m, e, robot, r, rng);

@@ -25,8 +25,9 @@ rfir::obs::CObservationRFIDReaders::Ptr poll(double h, std::vector<std::string> 
 /** "G" read once from x = 0 (its particles over x in [0.4 - h, 0.4 + h]),
  * then `n` empty polls from x = `to` (spaced `step` apart): the share of
  * its particles beyond x = `edge`. */
-double shareBeyondAfterEmptyPolls(double pd, double h, double to, int n, double step = 0.01,
-                                  uint64_t window = 30, double edge = 0.45) {
+double shareBeyondAfterEmptyPolls(double pd, double h, double to, int n,
+                                  double step = 0.01, uint64_t window = 30,
+                                  double edge = 0.45) {
     CRFIDTagParticleMap m;
     m.insertionOptions.seed = 5;
     m.insertionOptions.negativeInformation = pd;

@@ -1,7 +1,8 @@
 // CRFIDTagParticleMap, [tagmap] negative_information: a polled reader large
-// enough that did not read a recently read tag near it says the tag is not
-// in its square; polls from one pose count once; small readers and tags not
-// read recently are left alone; the options survive serialization.
+// enough that did not read a tag on its first visit, read recently, near it
+// says the tag is not in its square; polls from one pose count once; small
+// readers, tags not read recently and revisited tags are left alone; the
+// options survive serialization.
 #include "test_tagmaps_sim.h"
 
 #include <gtest/gtest.h>
@@ -24,15 +25,20 @@ rfir::obs::CObservationRFIDReaders::Ptr poll(double h, std::vector<std::string> 
 
 /** "G" read once from x = 0 (its particles over x in [0.4 - h, 0.4 + h]),
  * then `n` empty polls from x = `to` (spaced `step` apart): the share of
- * its particles beyond x = `edge`. */
+ * its particles beyond x = `edge`. `revisit`: G is read again on a second
+ * visit before the polls. */
 double shareBeyondAfterEmptyPolls(double pd, double h, double to, int n,
                                   double step = 0.01, uint64_t window = 30,
-                                  double edge = 0.45) {
+                                  double edge = 0.45, bool revisit = false) {
     CRFIDTagParticleMap m;
     m.insertionOptions.seed = 5;
     m.insertionOptions.negativeInformation = pd;
     m.insertionOptions.negativeWindow = window;
     m.insertObservation(*poll(h, {"G"}), pose3({0.0, 0.0, 0.0}));
+    if (revisit) {  // away (the reader far from G), then G read again
+        m.insertObservation(*poll(h, {"X"}), pose3({3.0, 0.0, 0.0}));
+        m.insertObservation(*poll(h, {"G"}), pose3({0.0, 0.0, 0.0}));
+    }
     for (int i = 0; i < n; i++)
         m.insertObservation(*poll(h, {}), pose3({to + step * i, 0.0, 0.0}));
     const auto pts = m.getTag("G")->estimator->smoothedParticles();
@@ -72,6 +78,16 @@ TEST(TagMapNotRead, SmallReadersAndOldTagsAreLeftAlone) {
     EXPECT_EQ(small, shareBeyondAfterEmptyPolls(0, 0.03, 0.03, 3, 0.01, 30, 0.4));
     EXPECT_EQ(shareBeyondAfterEmptyPolls(0.5, 0.15, 0.2, 10, 0.01, 1),
               shareBeyondAfterEmptyPolls(0, 0.15, 0.2, 10, 0.01, 1));
+}
+
+// Only a tag on its first visit: a revisited tag's estimate is older and
+// better than the robot's pose at the revisit (docs/slam.md).
+TEST(TagMapNotRead, RevisitedTagsAreLeftAlone) {
+    const auto revisited = [](double pd) {
+        return shareBeyondAfterEmptyPolls(pd, 0.15, 0.2, 10, 0.01, 30, 0.45, true);
+    };
+    EXPECT_GT(revisited(0), 0.25);
+    EXPECT_EQ(revisited(0.5), revisited(0));
 }
 
 TEST(TagMapNotRead, OptionsSurviveSerialization) {

@@ -232,9 +232,10 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
          * support still outweighs the contradicting run does not update it
          * (one ghost read does not drag a tag). */
         bool holdOutvoted = true;
-        /** negative_information (p_d in [0, 0.99]; 0: off): after each RFID
-         * observation, a tag read in the last negative_window observations
-         * whose estimate lies near a polled reader (half-sizes >=
+        /** negative_information (p_d in [0, 0.99]; 0: off, the seeds; the
+         * stock slam INIs: 0.5): after each RFID observation, a tag on its
+         * first visit, read in the last negative_window observations, whose
+         * estimate lies near a polled reader (half-sizes >=
          * negative_min_half_size) that did not read it is weighed by
          * 1 - p_d x the step model's likelihood of a read: a tag that a
          * large square did not read is not in it. */

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 namespace rfir::maps {
@@ -360,35 +359,43 @@ struct CRFIDTagParticleMapImpl {
                         const rfir::models::DetectionLikelihood& det,
                         rfir::models::TRandom& rng) {
         const auto& io = m.insertionOptions;
-        std::vector<const rfir::obs::CObservationRFIDReaders::TReading*> polls;
-        for (const auto& rd : o.readings)
-            if (std::min(rd.reader.halfX, rd.reader.halfY) >= io.negativeMinHalfSize)
-                polls.push_back(&rd);
+        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
+        // Each large reader's square and centre once per observation, not
+        // once per tag.
+        struct TPoll {
+            const std::vector<std::string>* tags;
+            ReaderArea area;
+            mrpt::math::TPoint2D centre;
+            double reach;  //!< m: beyond it every particle keeps its weight
+        };
+        std::vector<TPoll> polls;
+        for (const auto& rd : o.readings) {
+            if (std::min(rd.reader.halfX, rd.reader.halfY) < io.negativeMinHalfSize)
+                continue;
+            const ReaderArea a = area(rd.reader);
+            polls.push_back({&rd.tags, a,
+                             rfir::models::robotFrameToWorld(robot, c, s, a.x, a.y),
+                             std::max(a.halfX, a.halfY) + 0.3});
+        }
         if (polls.empty()) return;
         const double travel = m.m_track[0].travel;
         if (m.m_notReadTravel >= 0 && travel - m.m_notReadTravel < kNotReadTravel) return;
         m.m_notReadTravel = travel;
         const uint64_t now = m.m_track[0].steps;
-        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
         const double pd = io.negativeInformation;
         for (auto& [id, e] : m.m_tags) {
-            if (now - e.lastReadStep >= io.negativeWindow) continue;
-            if (e.visits > 1) continue;
-            for (const auto* rd : polls) {
-                if (std::find(rd->tags.begin(), rd->tags.end(), id) != rd->tags.end())
+            if (now - e.lastReadStep >= io.negativeWindow || e.visits > 1) continue;
+            for (const auto& q : polls) {
+                const double dx = e.estimate.mean.x - q.centre.x;
+                const double dy = e.estimate.mean.y - q.centre.y;
+                if (dx * dx + dy * dy > q.reach * q.reach ||
+                    std::find(q.tags->begin(), q.tags->end(), id) != q.tags->end())
                     continue;
-                const ReaderArea a = area(rd->reader);
-                // Skip a tag whose estimate is far from the square: the
-                // update would multiply every particle by about 1.
-                const double dx = e.estimate.mean.x - (robot.x + c * a.x - s * a.y);
-                const double dy = e.estimate.mean.y - (robot.y + s * a.x + c * a.y);
-                const double reach = std::max(a.halfX, a.halfY) + 0.3;
-                if (dx * dx + dy * dy > reach * reach) continue;
                 update(
                     m, e,
                     [&](const mrpt::math::TPoint2D& p) {
-                        return std::log1p(
-                            -pd * std::exp(det.baseLogLikelihood(robot, c, s, a, p)));
+                        return std::log1p(-pd * std::exp(det.baseLogLikelihood(
+                                                    robot, c, s, q.area, p)));
                     },
                     rng);
             }

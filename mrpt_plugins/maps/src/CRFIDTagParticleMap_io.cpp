@@ -280,9 +280,11 @@ void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
                         "CRFIDTagParticleMap: contradict_margin read from the stream "
                         "is outside [-1, 10]");
             }
+            // Maps written before it behaved without it (off; the window and
+            // half-size at their code defaults).
             io.negativeInformation = 0;
-            io.negativeWindow = 30;
-            io.negativeMinHalfSize = 0.1;
+            io.negativeWindow = TInsertionOptions().negativeWindow;
+            io.negativeMinHalfSize = TInsertionOptions().negativeMinHalfSize;
             if (version >= 7) {
                 in >> io.negativeInformation;
                 io.negativeWindow = in.ReadAs<uint64_t>();

@@ -8,6 +8,8 @@
 #include <rfir/models/read_model.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
 
+#include "unread_readers.h"
+
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 
@@ -218,12 +220,7 @@ struct CRFIDTagParticleMapImpl {
         return best + std::log(sum / double(K));
     }
 
-    static ReaderArea area(const rfir::obs::TRFIDReader& r) {
-        if (!(r.halfX > 0) || !(r.halfY > 0))
-            throw std::runtime_error("CRFIDTagParticleMap: reader '" + r.id +
-                                     "' has a non-positive half-size");
-        return {r.x, r.y, r.halfX, r.halfY};
-    }
+    static ReaderArea area(const rfir::obs::TRFIDReader& r) { return readerArea(r); }
 
     /** Judges the reads of `e` at this instant (areas from `first` on)
      * against its estimate: a read contradicts it when the model without the
@@ -359,46 +356,22 @@ struct CRFIDTagParticleMapImpl {
                         const rfir::models::DetectionLikelihood& det,
                         rfir::models::TRandom& rng) {
         const auto& io = m.insertionOptions;
-        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
-        // Each large reader's square and centre once per observation, not
-        // once per tag.
-        struct TPoll {
-            const std::vector<std::string>* tags;
-            ReaderArea area;
-            mrpt::math::TPoint2D centre;
-            double reach;  //!< m: beyond it every particle keeps its weight
-        };
-        std::vector<TPoll> polls;
-        for (const auto& rd : o.readings) {
-            if (std::min(rd.reader.halfX, rd.reader.halfY) < io.negativeMinHalfSize)
-                continue;
-            const ReaderArea a = area(rd.reader);
-            polls.push_back({&rd.tags, a,
-                             rfir::models::robotFrameToWorld(robot, c, s, a.x, a.y),
-                             std::max(a.halfX, a.halfY) + 0.3});
-        }
-        if (polls.empty()) return;
+        const CUnreadReaders unread(o, robot, io.negativeMinHalfSize,
+                                    io.negativeInformation, det);
+        if (unread.empty()) return;
         const double travel = m.m_track[0].travel;
         if (m.m_notReadTravel >= 0 && travel - m.m_notReadTravel < kNotReadTravel) return;
         m.m_notReadTravel = travel;
         const uint64_t now = m.m_track[0].steps;
-        const double pd = io.negativeInformation;
         for (auto& [id, e] : m.m_tags) {
             if (now - e.lastReadStep >= io.negativeWindow || e.visits > 1) continue;
-            for (const auto& q : polls) {
-                const double dx = e.estimate.mean.x - q.centre.x;
-                const double dy = e.estimate.mean.y - q.centre.y;
-                if (dx * dx + dy * dy > q.reach * q.reach ||
-                    std::find(q.tags->begin(), q.tags->end(), id) != q.tags->end())
-                    continue;
-                update(
-                    m, e,
-                    [&](const mrpt::math::TPoint2D& p) {
-                        return std::log1p(-pd * std::exp(det.baseLogLikelihood(
-                                                    robot, c, s, q.area, p)));
-                    },
-                    rng);
-            }
+            // One update per reader, each judged against the estimate the
+            // last one left (docs/slam.md: one update per tag and instant
+            // was tried and measured).
+            for (size_t k = 0; k < unread.size(); k++)
+                if (unread.missed(k, id, e.estimate.mean))
+                    update(
+                        m, e, [&](const auto& p) { return unread.logLik(k, p); }, rng);
         }
     }
 

@@ -1,0 +1,85 @@
+/* rfir: the evidence of readers that were polled and did not read a tag
+ * ([tagmap] negative_information; docs/slam.md, "Negative information"): a
+ * reader whose square holds the tag reads it with probability p_d, so a poll
+ * without the tag weighs a tag position p by 1 - p_d x step(p), the step
+ * detection model of the read (thesis eq. 3.7) without its outlier mixture.
+ * The squares and centres of one observation's large readers are placed
+ * once, then asked per tag. */
+#pragma once
+
+#include <rfir/models/detection_likelihood.h>
+#include <rfir/models/read_model.h>
+#include <rfir/obs/CObservationRFIDReaders.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rfir::maps {
+
+/** A reader's square in the robot frame; throws on a non-positive half-size. */
+inline rfir::models::ReaderArea readerArea(const rfir::obs::TRFIDReader& r) {
+    if (!(r.halfX > 0) || !(r.halfY > 0))
+        throw std::runtime_error("CRFIDTagParticleMap: reader '" + r.id +
+                                 "' has a non-positive half-size");
+    return {r.x, r.y, r.halfX, r.halfY};
+}
+
+class CUnreadReaders {
+  public:
+    CUnreadReaders() = default;
+    /** The readers of `o` with both half-sizes >= minHalfSize, placed by the
+     * robot's mean pose; pd = p_d. */
+    CUnreadReaders(const rfir::obs::CObservationRFIDReaders& o,
+                   const mrpt::math::TPose2D& robot, double minHalfSize, double pd,
+                   const rfir::models::DetectionLikelihood& det)
+        : m_robot(robot),
+          m_c(std::cos(robot.phi)),
+          m_s(std::sin(robot.phi)),
+          m_pd(pd),
+          m_logMissInside(std::log1p(-pd)),
+          m_det(&det) {
+        for (const auto& rd : o.readings) {
+            if (std::min(rd.reader.halfX, rd.reader.halfY) < minHalfSize) continue;
+            const auto a = readerArea(rd.reader);
+            // Beyond reach (0.3 m past the square) every particle keeps its weight.
+            m_polls.push_back({&rd.tags, a,
+                               rfir::models::robotFrameToWorld(robot, m_c, m_s, a.x, a.y),
+                               std::max(a.halfX, a.halfY) + 0.3});
+        }
+    }
+    bool empty() const { return m_polls.empty(); }
+    size_t size() const { return m_polls.size(); }
+
+    /** Reader k did not read `id` and its reach holds `tagMean`. */
+    bool missed(size_t k, const std::string& id,
+                const mrpt::math::TPoint2D& tagMean) const {
+        const auto& q = m_polls[k];
+        const double dx = tagMean.x - q.centre.x, dy = tagMean.y - q.centre.y;
+        return dx * dx + dy * dy <= q.reach * q.reach &&
+               std::find(q.tags->begin(), q.tags->end(), id) == q.tags->end();
+    }
+
+    /** log(1 - p_d x step) of reader k at tag position p (log(1 - p_d)
+     * inside the square, where the step model is flat, without the exp). */
+    double logLik(size_t k, const mrpt::math::TPoint2D& p) const {
+        const double b = m_det->baseLogLikelihood(m_robot, m_c, m_s, m_polls[k].area, p);
+        return b == 0 ? m_logMissInside : std::log1p(-m_pd * std::exp(b));
+    }
+
+  private:
+    struct TPoll {
+        const std::vector<std::string>* tags;
+        rfir::models::ReaderArea area;
+        mrpt::math::TPoint2D centre;
+        double reach;  //!< m
+    };
+    std::vector<TPoll> m_polls;
+    mrpt::math::TPose2D m_robot;
+    double m_c = 1, m_s = 0, m_pd = 0, m_logMissInside = 0;
+    const rfir::models::DetectionLikelihood* m_det = nullptr;
+};
+
+}  // namespace rfir::maps

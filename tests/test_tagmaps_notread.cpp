@@ -106,3 +106,45 @@ TEST(TagMapNotRead, OptionsSurviveSerialization) {
     EXPECT_EQ(back.insertionOptions.negativeWindow, 12u);
     EXPECT_EQ(back.insertionOptions.negativeMinHalfSize, 0.07);
 }
+
+// insertNewTags (the kidnap check's open run, [kidnap] map_new_tags_in_run):
+// a tag the map does not hold is placed over its reader's square;
+// a known tag is neither updated by its read nor pushed out by the readers
+// that missed it; an observation of known tags only changes nothing.
+TEST(TagMapNotRead, InsertNewTagsLeavesKnownTagsAlone) {
+    auto known = [] {
+        CRFIDTagParticleMap m;
+        m.insertionOptions.seed = 5;
+        m.insertionOptions.negativeInformation = 0.5;
+        m.insertObservation(*poll(0.15, {"G"}), pose3({0.0, 0.0, 0.0}));
+        return m;
+    };
+    // G's particles are over x in [0.25, 0.55]. From x = 0.05, reader A
+    // (square [0.3, 0.6]) reads G and N; B, 0.5 m ahead (square [0.4, 0.7]),
+    // reads nothing: each of the two would move G.
+    auto o = poll(0.15, {"G", "N"});
+    rfir::obs::CObservationRFIDReaders::TReading b;
+    b.reader = reader("B", 0.5, 0.0, 0.15);
+    o->readings.push_back(b);
+    const mrpt::poses::CPose2D at(0.05, 0.0, 0.0);
+    CRFIDTagParticleMap all = known(), fresh = known();
+    all.insertObservation(*o, mrpt::poses::CPose3D(at));
+    ASSERT_TRUE(fresh.insertNewTags(*o, at));
+    // The new tag: over A's square.
+    ASSERT_NE(fresh.getTag("N"), nullptr);
+    EXPECT_NEAR(fresh.getTag("N")->estimate.mean.x, 0.45, 0.03);
+    EXPECT_NEAR(fresh.getTag("N")->estimate.mean.y, 0.0, 0.03);
+    EXPECT_EQ(fresh.tagCount(), 2u);
+    // The known tag: untouched here, moved by the full insertion.
+    const CRFIDTagParticleMap before = known();
+    const auto& g0 = before.getTag("G")->estimate.mean;
+    EXPECT_EQ(fresh.getTag("G")->estimate.mean.x, g0.x);
+    EXPECT_EQ(fresh.getTag("G")->detections, before.getTag("G")->detections);
+    EXPECT_NE(all.getTag("G")->estimate.mean.x, g0.x);
+    EXPECT_GT(all.getTag("G")->detections, before.getTag("G")->detections);
+    // Known tags only: nothing is inserted.
+    CRFIDTagParticleMap again = known();
+    EXPECT_FALSE(again.insertNewTags(*poll(0.15, {"G"}), at));
+    EXPECT_EQ(again.getTag("G")->estimate.mean.x, g0.x);
+    EXPECT_EQ(again.tagCount(), 1u);
+}

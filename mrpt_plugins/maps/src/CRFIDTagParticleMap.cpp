@@ -134,6 +134,23 @@ bool CRFIDTagParticleMap::internal_insertObservation(
     return done;
 }
 
+bool CRFIDTagParticleMap::readsNewTags(
+    const rfir::obs::CObservationRFIDReaders& o) const {
+    for (const auto& rd : o.readings)
+        for (const auto& id : rd.tags)
+            if (!m_tags.count(id)) return true;
+    return false;
+}
+
+bool CRFIDTagParticleMap::insertNewTags(const rfir::obs::CObservationRFIDReaders& o,
+                                        const mrpt::poses::CPose2D& robot) {
+    if (!readsNewTags(o)) return false;
+    m_lastTouched = 0;
+    Impl::insertRFID(*this, o, robot.asTPose(), Impl::TInsert::NewTagsOnly);
+    m_totalTouched += m_lastTouched;
+    return true;
+}
+
 bool CRFIDTagParticleMap::internal_canComputeObservationLikelihood(
     const mrpt::obs::CObservation& obs) const {
     return dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs) ||

@@ -277,8 +277,10 @@ struct CRFIDTagParticleMapImpl {
         e.visitStartSample = e.sample;
     }
 
+    enum class TInsert { All, NewTagsOnly };
     static void insertRFID(Map& m, const rfir::obs::CObservationRFIDReaders& o,
-                           const mrpt::math::TPose2D& robot) {
+                           const mrpt::math::TPose2D& robot,
+                           TInsert which = TInsert::All) {
         const Map::TSensorTrack before = m.m_track[0];
         const uint64_t step = advance(m.m_track[0], robot);
         rfir::models::TRandom rng(stepSeed(m.insertionOptions.seed, 2 * step));
@@ -287,6 +289,7 @@ struct CRFIDTagParticleMapImpl {
         std::unordered_map<std::string, size_t> where;
         for (const auto& rd : o.readings)
             for (const auto& id : rd.tags) {
+                if (which == TInsert::NewTagsOnly && m.m_tags.count(id)) continue;
                 auto [it, isNew] = where.emplace(id, groups.size());
                 if (isNew) groups.push_back({id, {}});
                 groups[it->second].second.push_back(area(rd.reader));
@@ -334,7 +337,9 @@ struct CRFIDTagParticleMapImpl {
             }
             m.m_lastTouched++;
         }
-        if (m.insertionOptions.negativeInformation > 0) notRead(m, o, robot, det, rng);
+        // Only the whole observation's polls say which tags were missed.
+        if (m.insertionOptions.negativeInformation > 0 && which == TInsert::All)
+            notRead(m, o, robot, det, rng);
     }
 
     /** negative_information: each polled reader large enough that did not

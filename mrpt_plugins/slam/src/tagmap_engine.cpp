@@ -116,16 +116,23 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         if (i < baseLogLik_.size()) baseLogLik_[i] = base;
         return ll;
     }
-    void insert(const mrpt::poses::CPose2D& at) { insert(at, obs_); }
-    /** Inserts `obs` (this step's observations, or a part of them). */
-    void insert(const mrpt::poses::CPose2D& at,
-                const std::vector<mrpt::obs::CObservation::Ptr>& obs) {
+    void insert(const mrpt::poses::CPose2D& at) {
+        insert(at, [&] {
+            for (const auto& o : obs_)
+                map_.insertObservation(*o, mrpt::poses::CPose3D(at));
+        });
+    }
+    /** Runs `insertInto` (the map insertion of this step's observations, or
+     * a part of them), with the robot samples and the map correction's
+     * bookkeeping around it. */
+    template <class F>
+    void insert(const mrpt::poses::CPose2D& at, F&& insertInto) {
         if (map_.usesRobotSamples()) drawRobotSamples();
         std::vector<const TDetection*> fresh;  // first reads: join the correction
         if (cfg_.slam.map_correction)
             for (const auto& d : dets_)
                 if (!mapEntry(map_, d)) fresh.push_back(&d);
-        for (const auto& o : obs) map_.insertObservation(*o, mrpt::poses::CPose3D(at));
+        insertInto();
         if (fresh.empty()) return;
         // The robot's moments after this step's weighing, or now if it did not weigh.
         const auto post = pf_.posteriorMoments();
@@ -136,29 +143,12 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
                              e->estimate.mean.y, m);
     }
     /** While the kidnap check's run is open ([kidnap] map_new_tags_in_run):
-     * only the RFID tags never mapped, from a copy of the observation. */
+     * only the RFID tags never mapped. */
     void insertNewOnly(const mrpt::poses::CPose2D& at) {
         if (obs_.empty()) return;
         auto* rf = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(obs_[0].get());
-        if (!rf) return;
-        auto copy = std::make_shared<rfir::obs::CObservationRFIDReaders>(*rf);
-        bool any = false;
-        for (auto& r : copy->readings) {
-            auto& t = r.tags;
-            t.erase(
-                std::remove_if(t.begin(), t.end(),
-                               [&](const std::string& id) { return map_.getTag(id); }),
-                t.end());
-            any = any || !t.empty();
-        }
-        if (!any) return;
-        // The copy lacks the known tags' reads: its polls would say those
-        // tags were not read.
-        auto& io = map_.insertionOptions;
-        const double pd = io.negativeInformation;
-        io.negativeInformation = 0;
-        insert(at, {copy});
-        io.negativeInformation = pd;
+        if (!rf || !map_.readsNewTags(*rf)) return;
+        insert(at, [&] { map_.insertNewTags(*rf, at); });
     }
     /** End of a weighing step with map_correction: the tags still correlated
      * with the robot follow its correction (tag_correlation.h). */

@@ -9,6 +9,7 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/CMetricMap.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <cstdint>
@@ -16,6 +17,10 @@
 #include <string>
 #include <unordered_map>
 #include <vector>
+
+namespace rfir::obs {
+class CObservationRFIDReaders;
+}
 
 namespace rfir::maps {
 /** How re-reads of a tag weigh the robot (see docs/tag-maps.md). */
@@ -132,6 +137,17 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
     }
     const std::vector<std::string>& landmarkNames() const { return m_landmarkNames; }
     std::string landmarkName(int32_t id) const;
+
+    /** True if `o` reads a tag the map does not hold. */
+    bool readsNewTags(const rfir::obs::CObservationRFIDReaders& o) const;
+    /** Inserts only the reads of tags the map does not hold (placed as
+     * insertObservation places them, with the whole observation's reader
+     * geometry); known tags are neither updated nor weighed by the readers
+     * that missed them. For a pose the known tags disagree with (the kidnap
+     * check's open run, [kidnap] map_new_tags_in_run). Does nothing and
+     * returns false if `o` reads no new tag. */
+    bool insertNewTags(const rfir::obs::CObservationRFIDReaders& o,
+                       const mrpt::poses::CPose2D& robot);
 
     /** Would a read of this tag in the next observation start a new visit?
      * (false for unknown tags). */

@@ -210,113 +210,107 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     writeEntries(out, landmarks());
 }
 
-void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
-    switch (version) {
-        case 0:
-        case 1:
-        case 2:
-        case 3:
-        case 4:
-        case 5:
-        case 6:
-        case 7: {
-            in >> genericMapParams;
-            auto& io = insertionOptions;
-            if (version >= 3)
-                io.estimator = readBoundedString(in, kWhat);
-            else
-                io.estimator = in.ReadAs<uint8_t>() == 0
-                                   ? rfir::models::kParticleFilterName
-                                   : rfir::models::kFixedLagSmootherName;
-            io.params.numParticles = in.ReadAs<uint64_t>();
-            io.params.lag = in.ReadAs<uint64_t>();
-            in >> io.params.stepSigma >> io.params.rougheningSigma >>
-                io.params.essThreshold;
-            io.params.resampling =
-                static_cast<rfir::models::ResamplingScheme>(in.ReadAs<uint8_t>());
-            io.seed = in.ReadAs<uint64_t>();
-            auto& lo = likelihoodOptions;
-            lo.detection.model =
-                static_cast<rfir::models::DetectionModel>(in.ReadAs<uint8_t>());
-            in >> lo.detection.beta >> lo.detection.gaussianSigmaScale;
-            in >> lo.rangeBearing.sigmaRange >> lo.rangeBearing.sigmaBearing;
-            lo.robotUpdate = static_cast<TRobotUpdatePolicy>(in.ReadAs<uint8_t>());
-            lo.revisitMinGap = in.ReadAs<uint64_t>();
-            lo.rbUseLandmarkCov = readStrictBool(in, kWhat);
-            lo.revisitMinTravel = 0;
-            if (version >= 1) in >> lo.revisitMinTravel;
-            io.tagRobotPose = TTagRobotPose::Mean;
-            lo.robotLikelihood = TRobotLikelihood::TagMean;
-            lo.robotLikelihoodK = 12;
-            io.spreadCommitTravel = 0;
-            if (version >= 2) {
-                io.tagRobotPose = static_cast<TTagRobotPose>(in.ReadAs<uint8_t>());
-                lo.robotLikelihood = static_cast<TRobotLikelihood>(in.ReadAs<uint8_t>());
-                lo.robotLikelihoodK = in.ReadAs<uint64_t>();
-                if (lo.robotLikelihoodK < 1 ||
-                    lo.robotLikelihoodK > TLikelihoodOptions::kMaxRobotLikelihoodK)
-                    throw std::runtime_error(
-                        "CRFIDTagParticleMap: robot_likelihood_k = " +
-                        std::to_string(lo.robotLikelihoodK) +
-                        " read from the stream, "
-                        "outside 1.." +
-                        std::to_string(TLikelihoodOptions::kMaxRobotLikelihoodK));
-                in >> io.spreadCommitTravel;
-            }
-            lo.detection.outlierWeight = 0;
-            lo.detection.outlierLogFloor =
-                rfir::models::DetectionModelParams().outlierLogFloor;
-            if (version >= 4)
-                in >> lo.detection.outlierWeight >> lo.detection.outlierLogFloor;
-            // Maps written before it behaved without it.
-            io.reseatContradicted = version >= 5 && readStrictBool(in, kWhat);
-            io.contradictMargin = -1;
-            io.holdOutvoted = false;
-            if (version >= 6) {
-                in >> io.contradictMargin;
-                io.holdOutvoted = readStrictBool(in, kWhat);
-                if (!(io.contradictMargin >= -1 && io.contradictMargin <= 10))
-                    throw std::runtime_error(
-                        "CRFIDTagParticleMap: contradict_margin read from the stream "
-                        "is outside [-1, 10]");
-            }
-            // Maps written before it behaved without it (off; the window and
-            // half-size at their code defaults).
-            io.negativeInformation = 0;
-            io.negativeWindow = TInsertionOptions().negativeWindow;
-            io.negativeMinHalfSize = TInsertionOptions().negativeMinHalfSize;
-            if (version >= 7) {
-                in >> io.negativeInformation;
-                io.negativeWindow = in.ReadAs<uint64_t>();
-                in >> io.negativeMinHalfSize;
-                if (!(io.negativeInformation >= 0 && io.negativeInformation <= 0.99) ||
-                    io.negativeWindow < 1 || io.negativeWindow > 1000000 ||
-                    !(io.negativeMinHalfSize >= 0 && io.negativeMinHalfSize <= 10))
-                    throw std::runtime_error(
-                        "CRFIDTagParticleMap: negative_information, negative_window or "
-                        "negative_min_half_size read from the stream is out of range");
-            }
-            m_landmarkNames.resize(
-                rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
-            for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);
-            m_track[0] = m_track[1] = TSensorTrack();
-            m_notReadTravel = -1;
-            m_track[0].steps = in.ReadAs<uint64_t>();
-            m_track[1].steps = in.ReadAs<uint64_t>();
-            m_totalTouched = in.ReadAs<uint64_t>();
-            if (version >= 1)
-                for (auto& t : m_track) {
-                    in >> t.travel;
-                    t.hasPose = readStrictBool(in, kWhat);
-                    in >> t.lastX >> t.lastY;
-                }
-            m_lastTouched = 0;
-            readEntries(in, m_tags, version);
-            readEntries(in, m_landmarks, version);
-        } break;
-        default:
-            MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+namespace {
+using TInsertionOptions = CRFIDTagParticleMap::TInsertionOptions;
+using TLikelihoodOptions = CRFIDTagParticleMap::TLikelihoodOptions;
+
+/** The options of versions 0-3: the estimator, the detection model and the
+ * robot-update policy; what a version lacks takes the value it behaved with. */
+void readBaseOptions(CArchive& in, uint8_t version, TInsertionOptions& io,
+                     TLikelihoodOptions& lo) {
+    if (version >= 3)
+        io.estimator = readBoundedString(in, kWhat);
+    else
+        io.estimator = in.ReadAs<uint8_t>() == 0 ? rfir::models::kParticleFilterName
+                                                 : rfir::models::kFixedLagSmootherName;
+    io.params.numParticles = in.ReadAs<uint64_t>();
+    io.params.lag = in.ReadAs<uint64_t>();
+    in >> io.params.stepSigma >> io.params.rougheningSigma >> io.params.essThreshold;
+    io.params.resampling =
+        static_cast<rfir::models::ResamplingScheme>(in.ReadAs<uint8_t>());
+    io.seed = in.ReadAs<uint64_t>();
+    lo.detection.model = static_cast<rfir::models::DetectionModel>(in.ReadAs<uint8_t>());
+    in >> lo.detection.beta >> lo.detection.gaussianSigmaScale;
+    in >> lo.rangeBearing.sigmaRange >> lo.rangeBearing.sigmaBearing;
+    lo.robotUpdate = static_cast<TRobotUpdatePolicy>(in.ReadAs<uint8_t>());
+    lo.revisitMinGap = in.ReadAs<uint64_t>();
+    lo.rbUseLandmarkCov = readStrictBool(in, kWhat);
+    lo.revisitMinTravel = 0;
+    if (version >= 1) in >> lo.revisitMinTravel;
+    io.tagRobotPose = TTagRobotPose::Mean;
+    lo.robotLikelihood = TRobotLikelihood::TagMean;
+    lo.robotLikelihoodK = 12;
+    io.spreadCommitTravel = 0;
+    if (version < 2) return;
+    io.tagRobotPose = static_cast<TTagRobotPose>(in.ReadAs<uint8_t>());
+    lo.robotLikelihood = static_cast<TRobotLikelihood>(in.ReadAs<uint8_t>());
+    lo.robotLikelihoodK = in.ReadAs<uint64_t>();
+    if (lo.robotLikelihoodK < 1 ||
+        lo.robotLikelihoodK > TLikelihoodOptions::kMaxRobotLikelihoodK)
+        throw std::runtime_error(
+            "CRFIDTagParticleMap: robot_likelihood_k = " +
+            std::to_string(lo.robotLikelihoodK) + " read from the stream, outside 1.." +
+            std::to_string(TLikelihoodOptions::kMaxRobotLikelihoodK));
+    in >> io.spreadCommitTravel;
+}
+
+/** The robustness options of versions 4-7 (the outlier mixture, reseating,
+ * contradict_margin, hold_outvoted, negative_information): maps written
+ * before an option behaved without it. */
+void readRobustOptions(CArchive& in, uint8_t version, TInsertionOptions& io,
+                       TLikelihoodOptions& lo) {
+    lo.detection.outlierWeight = 0;
+    lo.detection.outlierLogFloor = rfir::models::DetectionModelParams().outlierLogFloor;
+    if (version >= 4) in >> lo.detection.outlierWeight >> lo.detection.outlierLogFloor;
+    io.reseatContradicted = version >= 5 && readStrictBool(in, kWhat);
+    io.contradictMargin = -1;
+    io.holdOutvoted = false;
+    if (version >= 6) {
+        in >> io.contradictMargin;
+        io.holdOutvoted = readStrictBool(in, kWhat);
+        if (!(io.contradictMargin >= -1 && io.contradictMargin <= 10))
+            throw std::runtime_error(
+                "CRFIDTagParticleMap: contradict_margin read from the stream "
+                "is outside [-1, 10]");
     }
+    // Off, the window and half-size at their code defaults.
+    io.negativeInformation = 0;
+    io.negativeWindow = TInsertionOptions().negativeWindow;
+    io.negativeMinHalfSize = TInsertionOptions().negativeMinHalfSize;
+    if (version < 7) return;
+    in >> io.negativeInformation;
+    io.negativeWindow = in.ReadAs<uint64_t>();
+    in >> io.negativeMinHalfSize;
+    if (!(io.negativeInformation >= 0 && io.negativeInformation <= 0.99) ||
+        io.negativeWindow < 1 || io.negativeWindow > 1000000 ||
+        !(io.negativeMinHalfSize >= 0 && io.negativeMinHalfSize <= 10))
+        throw std::runtime_error(
+            "CRFIDTagParticleMap: negative_information, negative_window or "
+            "negative_min_half_size read from the stream is out of range");
+}
+}  // namespace
+
+void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
+    if (version > 7) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    in >> genericMapParams;
+    readBaseOptions(in, version, insertionOptions, likelihoodOptions);
+    readRobustOptions(in, version, insertionOptions, likelihoodOptions);
+    m_landmarkNames.resize(rfir::obs::readBoundedCount(in, kWhat, B::kMaxMapEntries, 4));
+    for (auto& n : m_landmarkNames) n = readBoundedString(in, kWhat);
+    m_track[0] = m_track[1] = TSensorTrack();
+    m_notReadTravel = -1;
+    m_track[0].steps = in.ReadAs<uint64_t>();
+    m_track[1].steps = in.ReadAs<uint64_t>();
+    m_totalTouched = in.ReadAs<uint64_t>();
+    if (version >= 1)
+        for (auto& t : m_track) {
+            in >> t.travel;
+            t.hasPose = readStrictBool(in, kWhat);
+            in >> t.lastX >> t.lastY;
+        }
+    m_lastTouched = 0;
+    readEntries(in, m_tags, version);
+    readEntries(in, m_landmarks, version);
 }
 
 void CRFIDTagParticleMap::saveToTextFile(const std::string& path) const {

@@ -49,12 +49,26 @@ double shareBeyondAfterEmptyPolls(double pd, double h, double to, int n,
 }  // namespace
 
 // A 300 mm reader read "G" from x = 0 (so G is in [0.25, 0.55]); polled from
-// x = 0.2 on, its square (from [0.45, 0.75] on) reads nothing: G is below
-// 0.45. A particle at 0.5 is inside 6 of the polls' squares, weight 0.5^6.
-// Off, a third of the particles stay beyond 0.45.
+// x = 0.15 on, its square (from [0.40, 0.70] on) reads nothing: G is below
+// 0.45. A particle at 0.5 lies inside each of the ten polls' squares, 0.05
+// to 0.14 m from their centres, where the miss model's P(read) is 0.99 to
+// 0.2: its weight falls below 0.5^4, and the share of particles beyond 0.45
+// to under half of what it is without the option.
 TEST(TagMapNotRead, EmptyPollsOfALargeReaderPushTheTagOut) {
-    EXPECT_GT(shareBeyondAfterEmptyPolls(0, 0.15, 0.2, 10), 0.25);
-    EXPECT_LT(shareBeyondAfterEmptyPolls(0.5, 0.15, 0.2, 10), 0.1);
+    const double off = shareBeyondAfterEmptyPolls(0, 0.15, 0.15, 10);
+    EXPECT_GT(off, 0.25);
+    EXPECT_LT(shareBeyondAfterEmptyPolls(0.5, 0.15, 0.15, 10), 0.5 * off);
+}
+
+// Polled from x = 0.3 on, the squares (from [0.55, 0.85] on) lie beyond all
+// of G's particles: G is left as it was. The read model's tail as P(read)
+// (w = 0.92 for a particle at 0.54, 0.16 m from the first square's centre)
+// pushed it by 0.54 per poll; on a lawnmower path that push added up stripe
+// after stripe (docs/slam.md, "Negative information").
+TEST(TagMapNotRead, ATagJustOutsideTheUnreadSquaresIsLeftAlone) {
+    for (double edge : {0.45, 0.5})
+        EXPECT_EQ(shareBeyondAfterEmptyPolls(0.5, 0.15, 0.3, 10, 0.01, 30, edge),
+                  shareBeyondAfterEmptyPolls(0, 0.15, 0.3, 10, 0.01, 30, edge));
 }
 
 // Polls from one pose repeat one piece of evidence: ten of them weigh the

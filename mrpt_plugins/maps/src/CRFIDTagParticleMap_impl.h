@@ -339,7 +339,7 @@ struct CRFIDTagParticleMapImpl {
         }
         // Only the whole observation's polls say which tags were missed.
         if (m.insertionOptions.negativeInformation > 0 && which == TInsert::All)
-            notRead(m, o, robot, det, rng);
+            notRead(m, o, robot, rng);
     }
 
     /** negative_information: each polled reader large enough that did not
@@ -357,12 +357,10 @@ struct CRFIDTagParticleMapImpl {
      * of its squares, 0.5^n after n polls). */
     static constexpr double kNotReadTravel = 0.01;  // m
     static void notRead(Map& m, const rfir::obs::CObservationRFIDReaders& o,
-                        const mrpt::math::TPose2D& robot,
-                        const rfir::models::DetectionLikelihood& det,
-                        rfir::models::TRandom& rng) {
+                        const mrpt::math::TPose2D& robot, rfir::models::TRandom& rng) {
         const auto& io = m.insertionOptions;
         const CUnreadReaders unread(o, robot, io.negativeMinHalfSize,
-                                    io.negativeInformation, det);
+                                    io.negativeInformation);
         if (unread.empty()) return;
         const double travel = m.m_track[0].travel;
         if (m.m_notReadTravel >= 0 && travel - m.m_notReadTravel < kNotReadTravel) return;

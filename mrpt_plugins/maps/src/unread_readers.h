@@ -1,13 +1,14 @@
 /* rfir: the evidence of readers that were polled and did not read a tag
  * ([tagmap] negative_information; docs/slam.md, "Negative information"): a
  * reader whose square holds the tag reads it with probability p_d, so a poll
- * without the tag weighs a tag position p by 1 - p_d x step(p), the step
- * detection model of the read (thesis eq. 3.7) without its outlier mixture.
+ * without the tag weighs a tag position p by 1 - p_d P(read at p), P the
+ * miss model's square (miss_model.h, the smoother's miss factors' shape).
  * The squares and centres of one observation's large readers are placed
  * once, then asked per tag. */
 #pragma once
 
-#include <rfir/models/detection_likelihood.h>
+#include <rfir/models/detection_likelihood.h>  // ReaderArea
+#include <rfir/models/miss_model.h>
 #include <rfir/models/read_model.h>
 #include <rfir/obs/CObservationRFIDReaders.h>
 
@@ -33,14 +34,8 @@ class CUnreadReaders {
     /** The readers of `o` with both half-sizes >= minHalfSize, placed by the
      * robot's mean pose; pd = p_d. */
     CUnreadReaders(const rfir::obs::CObservationRFIDReaders& o,
-                   const mrpt::math::TPose2D& robot, double minHalfSize, double pd,
-                   const rfir::models::DetectionLikelihood& det)
-        : m_robot(robot),
-          m_c(std::cos(robot.phi)),
-          m_s(std::sin(robot.phi)),
-          m_pd(pd),
-          m_logMissInside(std::log1p(-pd)),
-          m_det(&det) {
+                   const mrpt::math::TPose2D& robot, double minHalfSize, double pd)
+        : m_robot(robot), m_c(std::cos(robot.phi)), m_s(std::sin(robot.phi)), m_pd(pd) {
         for (const auto& rd : o.readings) {
             if (std::min(rd.reader.halfX, rd.reader.halfY) < minHalfSize) continue;
             const auto a = readerArea(rd.reader);
@@ -62,11 +57,15 @@ class CUnreadReaders {
                std::find(q.tags->begin(), q.tags->end(), id) == q.tags->end();
     }
 
-    /** log(1 - p_d x step) of reader k at tag position p (log(1 - p_d)
-     * inside the square, where the step model is flat, without the exp). */
+    /** log(1 - p_d P(read)) of reader k for a tag at p (miss_model.h: a
+     * square whose soft edge lies inside the reader's). */
     double logLik(size_t k, const mrpt::math::TPoint2D& p) const {
-        const double b = m_det->baseLogLikelihood(m_robot, m_c, m_s, m_polls[k].area, p);
-        return b == 0 ? m_logMissInside : std::log1p(-m_pd * std::exp(b));
+        const auto& a = m_polls[k].area;
+        const auto e = rfir::models::readModel(m_robot, m_c, m_s, a.x, a.y, p);
+        const double tau = rfir::models::kMissEdgeSmoothing;
+        return std::log1p(-m_pd * rfir::models::readProbability(e.x, e.y, a.halfX,
+                                                                a.halfY, tau * a.halfX,
+                                                                tau * a.halfY));
     }
 
   private:
@@ -78,8 +77,7 @@ class CUnreadReaders {
     };
     std::vector<TPoll> m_polls;
     mrpt::math::TPose2D m_robot;
-    double m_c = 1, m_s = 0, m_pd = 0, m_logMissInside = 0;
-    const rfir::models::DetectionLikelihood* m_det = nullptr;
+    double m_c = 1, m_s = 0, m_pd = 0;
 };
 
 }  // namespace rfir::maps

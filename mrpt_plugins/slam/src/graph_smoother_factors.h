@@ -4,6 +4,7 @@
  * model are the models layer's templates, evaluated here over Jets. */
 #pragma once
 
+#include <rfir/models/miss_model.h>
 #include <rfir/models/odometry_noise.h>
 #include <rfir/models/read_model.h>
 
@@ -12,12 +13,7 @@
 #include <cmath>
 
 namespace rfir::slam::detail {
-/** |e| smoothed over tau (sqrt(e^2 + tau^2)): differentiable at 0. */
-template <class T>
-T smoothAbs(const T& e, double tau) {
-    using std::sqrt;
-    return sqrt(e * e + T(tau * tau));
-}
+using rfir::models::smoothAbs;
 
 /** The step model's shape along one axis: zero inside the half-size h,
  * growing linearly outside it, the corner rounded over tau (a softplus). */
@@ -28,15 +24,6 @@ T hinge(const T& e, double h, double tau) {
     const T z = (smoothAbs(e, tau) - h) / tau;
     if (z > T(30)) return z * tau;  // log(1 + e^z) = z to double precision
     return T(tau) * log(T(1) + exp(z));
-}
-
-/** Probability-like indicator of |e| < h (a logistic over tau). */
-template <class T>
-T inside(const T& e, double h, double tau) {
-    using std::exp;
-    const T z = (smoothAbs(e, tau) - h) / tau;
-    if (z > T(40)) return T(0) * z + T(std::exp(-40.0));
-    return T(1) / (T(1) + exp(z));
 }
 
 /** Odometry increment u between poses p and c; bias b = (translation scale,
@@ -102,7 +89,7 @@ struct CMissCost {
         // The logistic's slope lies inside the square: a tag just outside
         // it, as every unread tag near a reader is, costs nothing (a soft
         // edge on the square itself pushed the whole map outwards).
-        const T pin = inside(ex, hx - 2 * tauX, tauX) * inside(ey, hy - 2 * tauY, tauY);
+        const T pin = rfir::models::readProbability(ex, ey, hx, hy, tauX, tauY);
         // The tiny constant keeps sqrt differentiable where pin is 0.
         r[0] = sqrt(T(-2) * log(T(1) - pd * pin) + T(1e-12));
         return true;

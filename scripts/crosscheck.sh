@@ -44,10 +44,11 @@ declare -A SC=(
   [kid300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 200 --kidnap 100"
   [faults60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 300 --scale 1.02 --drift 0.005 --slips 3 --dead 2,100,160 --ghost 0.005"
   [faults300]="--layout ring8_300 --density 4 --path random --area 5x5 --duration 300 --scale 1.02 --drift 0.005 --slips 3 --dead 2,100,160 --ghost 0.005"
+  [lawn300]="--layout ring8_300 --density 4 --path lawn --area 6x6 --duration 300 --scale 0.98 --drift -0.008 --ghost 0.01"
   [rr60]="--layout ring8_60 --density 16 --path loop --area 3x3 --duration 150 --async --odom-hz 25 --rr-hz 5 --lag 0.02"
   [explore60]="--layout ring8_60 --density 16 --path random --area 10x8 --duration 2400"
 )
-ORDER="loop60 async60 slow60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300 faults60 faults300 rr60 explore60"
+ORDER="loop60 async60 slow60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300 faults60 faults300 lawn300 rr60 explore60"
 [ -n "$ONLY" ] && ORDER=${ONLY//,/ }
 [[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
 for m in pf ps fastslam; do

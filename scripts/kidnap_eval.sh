@@ -37,7 +37,7 @@ for b in rfir-sim rfir-slam; do
 done
 
 normal="bench_floor_30x20 sim_rfid_300mm_4tags_random sim_rfid_300mm_4tags_random_biased
-  sim_rfid_300mm_rotation sim_rfid_60mm_16tags_loop sim_rfid_60mm_16tags_loop_biased
+  sim_rfid_300mm_lawnmower sim_rfid_300mm_rotation sim_rfid_60mm_16tags_loop sim_rfid_60mm_16tags_loop_biased
   sim_rfid_60mm_16tags_random sim_rfid_60mm_100tags_loop sim_rfid_60mm_100tags_random
   sim_rb_rotation sim_rb_norotation"
 kidnap="sim_kidnap sim_kidnap_300mm"

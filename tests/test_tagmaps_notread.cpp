@@ -109,6 +109,7 @@ TEST(TagMapNotRead, OptionsSurviveSerialization) {
     m.insertionOptions.negativeInformation = 0.4;
     m.insertionOptions.negativeWindow = 12;
     m.insertionOptions.negativeMinHalfSize = 0.07;
+    m.likelihoodOptions.robotNegativeInformation = 0.3;
     mrpt::io::CMemoryStream buf;
     auto out = mrpt::serialization::archiveFrom(buf);
     out << m;
@@ -119,6 +120,7 @@ TEST(TagMapNotRead, OptionsSurviveSerialization) {
     EXPECT_EQ(back.insertionOptions.negativeInformation, 0.4);
     EXPECT_EQ(back.insertionOptions.negativeWindow, 12u);
     EXPECT_EQ(back.insertionOptions.negativeMinHalfSize, 0.07);
+    EXPECT_EQ(back.likelihoodOptions.robotNegativeInformation, 0.3);
 }
 
 // insertNewTags (the kidnap check's open run, [kidnap] map_new_tags_in_run):
@@ -161,4 +163,30 @@ TEST(TagMapNotRead, InsertNewTagsLeavesKnownTagsAlone) {
     EXPECT_FALSE(again.insertNewTags(*poll(0.15, {"G"}), at));
     EXPECT_EQ(again.getTag("G")->estimate.mean.x, g0.x);
     EXPECT_EQ(again.tagCount(), 1u);
+}
+
+// [tagmap_likelihood] robot_negative_information: T (mapped by reader A,
+// 0.4 m ahead) read again by A, not by B (0.2 m to A's left, the squares
+// overlap). From y = 0 T lies in A's square only; from y = -0.12 in both:
+// the read is flat over both poses, B's miss tells them apart. The kidnap
+// check's base sum reads the read alone.
+TEST(TagMapNotRead, RobotMissesTellPosesTheFlatReadCannot) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.seed = 5;
+    m.insertObservation(*poll(0.15, {"T"}), pose3({0.0, 0.0, 0.0}));
+    auto o = poll(0.15, {"T"});
+    rfir::obs::CObservationRFIDReaders::TReading b;
+    b.reader = reader("B", 0.4, 0.2, 0.15);
+    o->readings.push_back(b);
+    const auto weigh = [&](double pd, double y, double* base) {
+        m.likelihoodOptions.robotNegativeInformation = pd;
+        CRFIDTagParticleMap::TRobotReads r;
+        EXPECT_TRUE(m.resolveRobotReads(*o, r));
+        EXPECT_EQ(r.reads.size(), 1u);
+        return m.robotReadsLogLikelihood(r, {0.0, y, 0.0}, base);
+    };
+    double b0 = 0, b1 = 0;
+    EXPECT_NEAR(weigh(0, 0, &b0), weigh(0, -0.12, &b1), 1e-12);
+    EXPECT_GT(weigh(0.5, 0, &b0) - weigh(0.5, -0.12, &b1), 0.5);
+    EXPECT_NEAR(b0, b1, 1e-12);
 }

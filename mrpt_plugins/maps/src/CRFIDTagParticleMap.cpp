@@ -2,6 +2,9 @@
  * observation likelihood (PF-SLAM 003 Algorithm 1, PS-SLAM thesis Algorithm 2). */
 #include "CRFIDTagParticleMap_impl.h"
 
+#include <string_view>
+#include <unordered_set>
+
 using namespace rfir::maps;
 using rfir::models::PointEstimate;
 using rfir::models::ReaderArea;
@@ -174,6 +177,8 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
     out = TRobotReads();
     out.det = rfir::models::DetectionLikelihood(likelihoodOptions.detection);
     if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs)) {
+        out.missPd = likelihoodOptions.robotNegativeInformation;
+        std::unordered_set<std::string_view> missesOf;  // tags whose misses are listed
         for (const auto& rd : o->readings)
             for (const auto& id : rd.tags) {
                 const auto it = m_tags.find(id);
@@ -187,7 +192,9 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
                     r.sample = cur ? &e.sample : &e.visitStartSample;
                     r.area = Impl::area(rd.reader);
                     r.id = &it->first;
-                    out.reads.push_back(r);
+                    if (out.missPd > 0 && missesOf.insert(it->first).second)
+                        r.missedBy = Impl::missedBy(*this, *o, rd.reader, id);
+                    out.reads.push_back(std::move(r));
                 }
             }
         return true;
@@ -232,6 +239,10 @@ double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
                                                    s, rd.area, r.det);
             sum += r.det.withOutliers(b);
             base += b;
+            // Misses weigh the robot; the kidnap check reads the reads alone.
+            for (const auto& a : rd.missedBy)
+                sum += rfir::models::missLogLikelihood(robot, c, s, a, rd.est->mean,
+                                                       r.missPd);
         }
         if (baseSum) *baseSum = base;
         return sum;

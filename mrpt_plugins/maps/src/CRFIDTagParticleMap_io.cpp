@@ -171,8 +171,8 @@ uint8_t CRFIDTagParticleMap::serializeGetVersion() const {
     // outlier mixture's options and the contradicted-read counts; 5: the
     // reseat counts and option (reseat_contradicted); 6: contradict_margin
     // and hold_outvoted; 7: negative_information, its window and minimum
-    // reader half-size.
-    return 7;
+    // reader half-size; 8: robot_negative_information.
+    return 8;
 }
 
 void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
@@ -201,6 +201,7 @@ void CRFIDTagParticleMap::serializeTo(CArchive& out) const {
     out << io.negativeInformation;                                      // v7
     out.WriteAs<uint64_t>(io.negativeWindow);
     out << io.negativeMinHalfSize;
+    out << lo.robotNegativeInformation;  // v8
     out << m_landmarkNames;
     out.WriteAs<uint64_t>(m_track[0].steps);
     out.WriteAs<uint64_t>(m_track[1].steps);
@@ -254,7 +255,7 @@ void readBaseOptions(CArchive& in, uint8_t version, TInsertionOptions& io,
     in >> io.spreadCommitTravel;
 }
 
-/** The robustness options of versions 4-7 (the outlier mixture, reseating,
+/** The robustness options of versions 4-8 (the outlier mixture, reseating,
  * contradict_margin, hold_outvoted, negative_information): maps written
  * before an option behaved without it. */
 void readRobustOptions(CArchive& in, uint8_t version, TInsertionOptions& io,
@@ -277,6 +278,7 @@ void readRobustOptions(CArchive& in, uint8_t version, TInsertionOptions& io,
     io.negativeInformation = 0;
     io.negativeWindow = TInsertionOptions().negativeWindow;
     io.negativeMinHalfSize = TInsertionOptions().negativeMinHalfSize;
+    lo.robotNegativeInformation = 0;
     if (version < 7) return;
     in >> io.negativeInformation;
     io.negativeWindow = in.ReadAs<uint64_t>();
@@ -287,11 +289,17 @@ void readRobustOptions(CArchive& in, uint8_t version, TInsertionOptions& io,
         throw std::runtime_error(
             "CRFIDTagParticleMap: negative_information, negative_window or "
             "negative_min_half_size read from the stream is out of range");
+    if (version < 8) return;
+    in >> lo.robotNegativeInformation;
+    if (!(lo.robotNegativeInformation >= 0 && lo.robotNegativeInformation <= 0.99))
+        throw std::runtime_error(
+            "CRFIDTagParticleMap: robot_negative_information read from the stream is "
+            "outside [0, 0.99]");
 }
 }  // namespace
 
 void CRFIDTagParticleMap::serializeFrom(CArchive& in, uint8_t version) {
-    if (version > 7) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    if (version > 8) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     in >> genericMapParams;
     readBaseOptions(in, version, insertionOptions, likelihoodOptions);
     readRobustOptions(in, version, insertionOptions, likelihoodOptions);

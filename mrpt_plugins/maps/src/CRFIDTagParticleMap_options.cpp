@@ -116,7 +116,7 @@ const std::vector<std::string>& likelihoodKeys() {
         "revisit_min_gap",      "revisit_min_travel",
         "rb_use_landmark_cov",  "robot_likelihood",
         "robot_likelihood_k",   "outlier_weight",
-        "outlier_log_floor"};
+        "outlier_log_floor",    "robot_negative_information"};
     return k;
 }
 }  // namespace
@@ -152,6 +152,8 @@ void CRFIDTagParticleMap::TLikelihoodOptions::loadFromConfigFile(
         "robot_likelihood", kRobotLikNames, static_cast<size_t>(robotLikelihood)));
     robotLikelihoodK = size_t(sec.getInt("robot_likelihood_k", int64_t(robotLikelihoodK),
                                          1, int64_t(kMaxRobotLikelihoodK)));
+    robotNegativeInformation = sec.getDouble(
+        "robot_negative_information", robotNegativeInformation, TRange::closed(0, 0.99));
 }
 
 void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) const {
@@ -170,7 +172,8 @@ void CRFIDTagParticleMap::TLikelihoodOptions::dumpToTextStream(std::ostream& o) 
       << "rb_use_landmark_cov  = " << (rbUseLandmarkCov ? "true" : "false") << "\n"
       << "robot_likelihood     = " << kRobotLikNames[static_cast<size_t>(robotLikelihood)]
       << "\n"
-      << "robot_likelihood_k   = " << robotLikelihoodK << "\n";
+      << "robot_likelihood_k   = " << robotLikelihoodK << "\n"
+      << "robot_negative_information = " << robotNegativeInformation << "\n";
 }
 
 CRFIDTagParticleMap::TMapDefinition::TMapDefinition() = default;

@@ -60,12 +60,8 @@ class CUnreadReaders {
     /** log(1 - p_d P(read)) of reader k for a tag at p (miss_model.h: a
      * square whose soft edge lies inside the reader's). */
     double logLik(size_t k, const mrpt::math::TPoint2D& p) const {
-        const auto& a = m_polls[k].area;
-        const auto e = rfir::models::readModel(m_robot, m_c, m_s, a.x, a.y, p);
-        const double tau = rfir::models::kMissEdgeSmoothing;
-        return std::log1p(-m_pd * rfir::models::readProbability(e.x, e.y, a.halfX,
-                                                                a.halfY, tau * a.halfX,
-                                                                tau * a.halfY));
+        return rfir::models::missLogLikelihood(m_robot, m_c, m_s, m_polls[k].area, p,
+                                               m_pd);
     }
 
   private:

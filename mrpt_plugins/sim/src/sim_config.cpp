@@ -83,13 +83,14 @@ void loadRobot(const CIniSection& s, TSimConfig& c) {
 void loadTrajectory(const CIniSection& s, TTrajectoryConfig& t) {
     using K = TTrajectoryConfig::Kind;
     using R = TTrajectoryConfig::Rotation;
-    const int k = s.choice("type", {"loop", "predefined", "random"});
+    const int k = s.choice("type", {"loop", "predefined", "random", "lawnmower"});
     if (k >= 0) t.kind = K(k);
     const int r = s.choice("rotation", {"none", "follow", "spin"});
     if (r >= 0) t.rotation = R(r);
     s.integer("laps", t.laps, 1, 1000);
     s.integer("predefined", t.predefined, 1, 5);
     s.integer("waypoints", t.waypoints, 2, 100000);
+    s.positive("stripe_spacing", t.stripeSpacing, 1000);
     s.nonNegative("margin", t.margin, 1000);
     s.positive("speed", t.speed, 100);
     s.positive("turn_rate", t.turnRate, 100);
@@ -159,8 +160,8 @@ void TSimConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
         *this);
     loadTrajectory(CIniSection(cfg, p + "trajectory",
                                {"type", "rotation", "laps", "predefined", "waypoints",
-                                "margin", "speed", "turn_rate", "spin_rate",
-                                "start_phi_deg", "spots", "spot_pause"}),
+                                "stripe_spacing", "margin", "speed", "turn_rate",
+                                "spin_rate", "start_phi_deg", "spots", "spot_pause"}),
                    trajectory);
     loadKidnap(
         CIniSection(cfg, p + "kidnap",

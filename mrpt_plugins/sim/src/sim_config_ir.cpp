@@ -118,13 +118,14 @@ void TSimConfig::dumpToTextStream(std::ostream& o) const {
     for (size_t i = 0; i < receivers.size(); i++)
         o << (i ? ", " : "") << receivers[i].x << " " << receivers[i].y << " "
           << receivers[i].z;
-    static const char* kinds[] = {"loop", "predefined", "random"};
+    static const char* kinds[] = {"loop", "predefined", "random", "lawnmower"};
     static const char* rots[] = {"none", "follow", "spin"};
     const auto& t = trajectory;
     o << "\n[trajectory] type=" << kinds[int(t.kind)]
       << " rotation=" << rots[int(t.rotation)] << " laps=" << t.laps
       << " predefined=" << t.predefined << " waypoints=" << t.waypoints
-      << " margin=" << t.margin << " speed=" << t.speed << " spots=" << t.spots << "\n";
+      << " stripe_spacing=" << t.stripeSpacing << " margin=" << t.margin
+      << " speed=" << t.speed << " spots=" << t.spots << "\n";
     if (kidnap.enabled)
         o << "[kidnap] time=" << kidnap.time << " carry_time=" << kidnap.carryTime
           << " to_time=" << kidnap.toTime << "\n";

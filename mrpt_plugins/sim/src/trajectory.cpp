@@ -60,6 +60,17 @@ std::vector<TPoseU> trajectoryWaypoints(const TTrajectoryConfig& t, double x0, d
         }
         return w;
     }
+    if (t.kind == TTrajectoryConfig::Kind::Lawnmower) {
+        // The last stripe lies on y1 when the spacing divides the height.
+        const int n = 1 + int(std::floor((y1 - y0) / t.stripeSpacing + 1e-9));
+        for (int lap = 0; lap < t.laps; lap++)
+            for (int k = 0; k < n; k++) {
+                const double y = y0 + k * t.stripeSpacing;
+                w.push_back({k % 2 ? x1 : x0, y, 0});
+                w.push_back({k % 2 ? x0 : x1, y, 0});
+            }
+        return w;
+    }
     const Shape& s = predefinedShape(
         t.kind == TTrajectoryConfig::Kind::Loop ? 1 : std::clamp(t.predefined, 1, 5));
     for (int lap = 0; lap < t.laps; lap++)

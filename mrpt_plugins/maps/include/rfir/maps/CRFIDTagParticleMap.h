@@ -164,10 +164,15 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
             rfir::models::ReaderArea area;                              //!< RFID
             double range = 0, yaw = 0;                                  //!< range-bearing
             const std::string* id = nullptr;  //!< tag or landmark ID (the map's)
+            /** RFID, robot_negative_information: the large readers of the
+             * observation near `area` that did not read the tag (on the
+             * tag's first weighing read of the observation only). */
+            std::vector<rfir::models::ReaderArea> missedBy;
         };
         bool rangeBearing = false;
         double sensorX = 0, sensorY = 0, sensorYaw = 0;  //!< range-bearing
         rfir::models::DetectionLikelihood det;
+        double missPd = 0;  //!< robot_negative_information
         std::vector<TRead> reads;
     };
     /** Resolves `obs` (RFID or bearing-range; false for other kinds). */
@@ -287,6 +292,13 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         /** robot_likelihood, robot_likelihood_k (K tag particles, RFID only). */
         TRobotLikelihood robotLikelihood = TRobotLikelihood::TagMean;
         size_t robotLikelihoodK = 12;
+        /** robot_negative_information (p_d in [0, 0.99]; 0: off, the seeds):
+         * a read that weighs the robot brings the polls of the same
+         * observation that missed the tag, by the large readers ([tagmap]
+         * negative_min_half_size) near the one that read it: each weighs
+         * the robot particle by 1 - p_d P(read) (miss_model.h), at the tag
+         * estimate the read weighs against. */
+        double robotNegativeInformation = 0;
         static constexpr size_t kMaxRobotLikelihoodK = 64;  //!< its INI bound
 
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,

@@ -15,6 +15,9 @@
  * "Negative information"). */
 #pragma once
 
+#include <rfir/models/detection_likelihood.h>
+#include <rfir/models/read_model.h>
+
 #include <cmath>
 
 namespace rfir::models {
@@ -43,8 +46,19 @@ T readProbability(const T& ex, const T& ey, double hx, double hy, double tauX,
     return softInside(ex, hx - 2 * tauX, tauX) * softInside(ey, hy - 2 * tauY, tauY);
 }
 
-/** The smoothing the tag filters use: this share of each half-size (the
+/** The smoothing the filters use: this share of each half-size (the
  * smoother's `read_edge_smoothing` default). */
 constexpr double kMissEdgeSmoothing = 0.1;
+
+/** log(1 - pd P(read)) of a reader of `area` (robot frame) that did not read
+ * a tag at `tag` (world), the robot at `robot` with cos c and sin s. */
+inline double missLogLikelihood(const mrpt::math::TPose2D& robot, double c, double s,
+                                const ReaderArea& area, const mrpt::math::TPoint2D& tag,
+                                double pd) {
+    const auto e = readModel(robot, c, s, area.x, area.y, tag);
+    return std::log1p(-pd * readProbability(e.x, e.y, area.halfX, area.halfY,
+                                            kMissEdgeSmoothing * area.halfX,
+                                            kMissEdgeSmoothing * area.halfY));
+}
 
 }  // namespace rfir::models

@@ -46,7 +46,10 @@ struct TTrajectoryConfig {
     enum class Kind {
         Loop,        //!< rectangle inset by `margin` in the area, `laps` times
         Predefined,  //!< one of five closed shapes (`predefined` = 1..5), `laps` times
-        Random       //!< `waypoints` uniform random waypoints inside the inset area
+        Random,      //!< `waypoints` uniform random waypoints inside the inset area
+        /** Coverage: stripes along x, `stripe_spacing` apart across y, driven
+         * back and forth (boustrophedon), `laps` times. */
+        Lawnmower
     };
     enum class Rotation {
         None,    //!< heading constant: the omnidirectional robot only translates
@@ -58,13 +61,14 @@ struct TTrajectoryConfig {
     int laps = 3;
     int predefined = 1;
     int waypoints = 20;
-    double margin = 0.5;     //!< distance kept from the area border (m)
-    double speed = 0.2;      //!< m/s
-    double turnRate = 0.5;   //!< rad/s, in-place turns (Follow)
-    double spinRate = 0.2;   //!< rad/s (Spin)
-    double startPhi = 0;     //!< initial heading (rad)
-    int spots = 0;           //!< stops spread evenly along the path (IR: 70)
-    double spotPause = 1.0;  //!< seconds standing at each spot
+    double stripeSpacing = 0.5;  //!< m, between lawnmower stripes
+    double margin = 0.5;         //!< distance kept from the area border (m)
+    double speed = 0.2;          //!< m/s
+    double turnRate = 0.5;       //!< rad/s, in-place turns (Follow)
+    double spinRate = 0.2;       //!< rad/s (Spin)
+    double startPhi = 0;         //!< initial heading (rad)
+    int spots = 0;               //!< stops spread evenly along the path (IR: 70)
+    double spotPause = 1.0;      //!< seconds standing at each spot
 };
 
 /** Kidnapping ([kidnap] section): at `time` the robot is lifted and carried for

@@ -193,7 +193,8 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
                     r.area = Impl::area(rd.reader);
                     r.id = &it->first;
                     if (out.missPd > 0 && missesOf.insert(it->first).second)
-                        r.missedBy = Impl::missedBy(*this, *o, rd.reader, id);
+                        r.missedBy = readersThatMissed(
+                            *o, rd.reader, id, insertionOptions.negativeMinHalfSize);
                     out.reads.push_back(std::move(r));
                 }
             }

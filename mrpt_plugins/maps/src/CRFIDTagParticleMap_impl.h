@@ -222,27 +222,6 @@ struct CRFIDTagParticleMapImpl {
 
     static ReaderArea area(const rfir::obs::TRFIDReader& r) { return readerArea(r); }
 
-    /** robot_negative_information: the large readers of `o` that did not
-     * read `id`, near `by` (the reader that did: the tag lies about in its
-     * square), robot frame. */
-    static std::vector<ReaderArea> missedBy(const Map& m,
-                                            const rfir::obs::CObservationRFIDReaders& o,
-                                            const rfir::obs::TRFIDReader& by,
-                                            const std::string& id) {
-        std::vector<ReaderArea> out;
-        const double minHalf = m.insertionOptions.negativeMinHalfSize;
-        for (const auto& rd : o.readings) {
-            const auto& q = rd.reader;
-            if (std::min(q.halfX, q.halfY) < minHalf ||
-                std::abs(q.x - by.x) > q.halfX + by.halfX + 0.3 ||
-                std::abs(q.y - by.y) > q.halfY + by.halfY + 0.3 ||
-                std::find(rd.tags.begin(), rd.tags.end(), id) != rd.tags.end())
-                continue;
-            out.push_back(area(q));
-        }
-        return out;
-    }
-
     /** Judges the reads of `e` at this instant (areas from `first` on)
      * against its estimate: a read contradicts it when the model without the
      * mixture gives it less than outlier_log_floor, or when the estimate lies

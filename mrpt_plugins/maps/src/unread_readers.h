@@ -28,6 +28,26 @@ inline rfir::models::ReaderArea readerArea(const rfir::obs::TRFIDReader& r) {
     return {r.x, r.y, r.halfX, r.halfY};
 }
 
+/** [tagmap_likelihood] robot_negative_information: the readers of `o` with
+ * both half-sizes >= minHalfSize that did not read `id`, whose squares come
+ * within 0.3 m of the square of `by` (the reader that did: the tag lies about
+ * in its square). Robot frame. */
+inline std::vector<rfir::models::ReaderArea> readersThatMissed(
+    const rfir::obs::CObservationRFIDReaders& o, const rfir::obs::TRFIDReader& by,
+    const std::string& id, double minHalfSize) {
+    std::vector<rfir::models::ReaderArea> out;
+    for (const auto& rd : o.readings) {
+        const auto& q = rd.reader;
+        if (std::min(q.halfX, q.halfY) < minHalfSize ||
+            std::abs(q.x - by.x) > q.halfX + by.halfX + 0.3 ||
+            std::abs(q.y - by.y) > q.halfY + by.halfY + 0.3 ||
+            std::find(rd.tags.begin(), rd.tags.end(), id) != rd.tags.end())
+            continue;
+        out.push_back(readerArea(q));
+    }
+    return out;
+}
+
 class CUnreadReaders {
   public:
     CUnreadReaders() = default;

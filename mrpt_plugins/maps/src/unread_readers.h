@@ -28,9 +28,13 @@ inline rfir::models::ReaderArea readerArea(const rfir::obs::TRFIDReader& r) {
     return {r.x, r.y, r.halfX, r.halfY};
 }
 
+/** m past a reader's square beyond which a miss weighs nothing worth the
+ * work (the miss model's P(read) is about 0 a few centimetres out). */
+constexpr double kMissReach = 0.3;
+
 /** [tagmap_likelihood] robot_negative_information: the readers of `o` with
  * both half-sizes >= minHalfSize that did not read `id`, whose squares come
- * within 0.3 m of the square of `by` (the reader that did: the tag lies about
+ * within kMissReach of the square of `by` (the reader that did: the tag lies about
  * in its square). Robot frame. */
 inline std::vector<rfir::models::ReaderArea> readersThatMissed(
     const rfir::obs::CObservationRFIDReaders& o, const rfir::obs::TRFIDReader& by,
@@ -39,8 +43,8 @@ inline std::vector<rfir::models::ReaderArea> readersThatMissed(
     for (const auto& rd : o.readings) {
         const auto& q = rd.reader;
         if (std::min(q.halfX, q.halfY) < minHalfSize ||
-            std::abs(q.x - by.x) > q.halfX + by.halfX + 0.3 ||
-            std::abs(q.y - by.y) > q.halfY + by.halfY + 0.3 ||
+            std::abs(q.x - by.x) > q.halfX + by.halfX + kMissReach ||
+            std::abs(q.y - by.y) > q.halfY + by.halfY + kMissReach ||
             std::find(rd.tags.begin(), rd.tags.end(), id) != rd.tags.end())
             continue;
         out.push_back(readerArea(q));
@@ -59,10 +63,10 @@ class CUnreadReaders {
         for (const auto& rd : o.readings) {
             if (std::min(rd.reader.halfX, rd.reader.halfY) < minHalfSize) continue;
             const auto a = readerArea(rd.reader);
-            // Beyond reach (0.3 m past the square) every particle keeps its weight.
+            // Beyond reach every particle keeps its weight.
             m_polls.push_back({&rd.tags, a,
                                rfir::models::robotFrameToWorld(robot, m_c, m_s, a.x, a.y),
-                               std::max(a.halfX, a.halfY) + 0.3});
+                               std::max(a.halfX, a.halfY) + kMissReach});
         }
     }
     bool empty() const { return m_polls.empty(); }

@@ -2,8 +2,7 @@
  * observation likelihood (PF-SLAM 003 Algorithm 1, PS-SLAM thesis Algorithm 2). */
 #include "CRFIDTagParticleMap_impl.h"
 
-#include <string_view>
-#include <unordered_set>
+#include <algorithm>
 
 using namespace rfir::maps;
 using rfir::models::PointEstimate;
@@ -177,8 +176,7 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
     out = TRobotReads();
     out.det = rfir::models::DetectionLikelihood(likelihoodOptions.detection);
     if (const auto* o = dynamic_cast<const rfir::obs::CObservationRFIDReaders*>(&obs)) {
-        out.missPd = likelihoodOptions.robotNegativeInformation;
-        std::unordered_set<std::string_view> missesOf;  // tags whose misses are listed
+        const bool misses = likelihoodOptions.robotNegativeInformation > 0;
         for (const auto& rd : o->readings)
             for (const auto& id : rd.tags) {
                 const auto it = m_tags.find(id);
@@ -190,9 +188,13 @@ bool CRFIDTagParticleMap::resolveRobotReads(const mrpt::obs::CObservation& obs,
                     const bool cur = w == Impl::Which::Current;
                     r.est = cur ? &e.estimate : &e.visitStartEstimate;
                     r.sample = cur ? &e.sample : &e.visitStartSample;
-                    r.area = Impl::area(rd.reader);
+                    r.area = readerArea(rd.reader);
                     r.id = &it->first;
-                    if (out.missPd > 0 && missesOf.insert(it->first).second)
+                    // The misses go with the tag's first weighing read only.
+                    if (misses && std::none_of(out.reads.begin(), out.reads.end(),
+                                               [&](const TRobotReads::TRead& q) {
+                                                   return q.id == r.id;
+                                               }))
                         r.missedBy = readersThatMissed(
                             *o, rd.reader, id, insertionOptions.negativeMinHalfSize);
                     out.reads.push_back(std::move(r));
@@ -242,8 +244,9 @@ double CRFIDTagParticleMap::robotReadsLogLikelihood(const TRobotReads& r,
             base += b;
             // Misses weigh the robot; the kidnap check reads the reads alone.
             for (const auto& a : rd.missedBy)
-                sum += rfir::models::missLogLikelihood(robot, c, s, a, rd.est->mean,
-                                                       r.missPd);
+                sum += rfir::models::missLogLikelihood(
+                    robot, c, s, a, rd.est->mean,
+                    likelihoodOptions.robotNegativeInformation);
         }
         if (baseSum) *baseSum = base;
         return sum;

@@ -220,8 +220,6 @@ struct CRFIDTagParticleMapImpl {
         return best + std::log(sum / double(K));
     }
 
-    static ReaderArea area(const rfir::obs::TRFIDReader& r) { return readerArea(r); }
-
     /** Judges the reads of `e` at this instant (areas from `first` on)
      * against its estimate: a read contradicts it when the model without the
      * mixture gives it less than outlier_log_floor, or when the estimate lies
@@ -292,7 +290,7 @@ struct CRFIDTagParticleMapImpl {
                 if (which == TInsert::NewTagsOnly && m.m_tags.count(id)) continue;
                 auto [it, isNew] = where.emplace(id, groups.size());
                 if (isNew) groups.push_back({id, {}});
-                groups[it->second].second.push_back(area(rd.reader));
+                groups[it->second].second.push_back(readerArea(rd.reader));
             }
         const rfir::models::DetectionLikelihood det(m.likelihoodOptions.detection);
         for (auto& [id, areas] : groups) {

@@ -28,6 +28,11 @@ inline rfir::models::ReaderArea readerArea(const rfir::obs::TRFIDReader& r) {
     return {r.x, r.y, r.halfX, r.halfY};
 }
 
+/** The reading names tag `id`. */
+inline bool readsTag(const std::vector<std::string>& tags, const std::string& id) {
+    return std::find(tags.begin(), tags.end(), id) != tags.end();
+}
+
 /** m past a reader's square beyond which a miss weighs nothing worth the
  * work (the miss model's P(read) is about 0 a few centimetres out). */
 constexpr double kMissReach = 0.3;
@@ -45,7 +50,7 @@ inline std::vector<rfir::models::ReaderArea> readersThatMissed(
         if (std::min(q.halfX, q.halfY) < minHalfSize ||
             std::abs(q.x - by.x) > q.halfX + by.halfX + kMissReach ||
             std::abs(q.y - by.y) > q.halfY + by.halfY + kMissReach ||
-            std::find(rd.tags.begin(), rd.tags.end(), id) != rd.tags.end())
+            readsTag(rd.tags, id))
             continue;
         out.push_back(readerArea(q));
     }
@@ -54,7 +59,6 @@ inline std::vector<rfir::models::ReaderArea> readersThatMissed(
 
 class CUnreadReaders {
   public:
-    CUnreadReaders() = default;
     /** The readers of `o` with both half-sizes >= minHalfSize, placed by the
      * robot's mean pose; pd = p_d. */
     CUnreadReaders(const rfir::obs::CObservationRFIDReaders& o,
@@ -77,8 +81,7 @@ class CUnreadReaders {
                 const mrpt::math::TPoint2D& tagMean) const {
         const auto& q = m_polls[k];
         const double dx = tagMean.x - q.centre.x, dy = tagMean.y - q.centre.y;
-        return dx * dx + dy * dy <= q.reach * q.reach &&
-               std::find(q.tags->begin(), q.tags->end(), id) == q.tags->end();
+        return dx * dx + dy * dy <= q.reach * q.reach && !readsTag(*q.tags, id);
     }
 
     /** log(1 - p_d P(read)) of reader k for a tag at p (miss_model.h: a

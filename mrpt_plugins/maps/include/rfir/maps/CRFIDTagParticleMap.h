@@ -172,7 +172,6 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
         bool rangeBearing = false;
         double sensorX = 0, sensorY = 0, sensorYaw = 0;  //!< range-bearing
         rfir::models::DetectionLikelihood det;
-        double missPd = 0;  //!< robot_negative_information
         std::vector<TRead> reads;
     };
     /** Resolves `obs` (RFID or bearing-range; false for other kinds). */

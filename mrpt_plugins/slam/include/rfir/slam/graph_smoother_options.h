@@ -2,6 +2,8 @@
  * a run offline (graph_smoother.h, docs/slam.md "Offline smoothing"). */
 #pragma once
 
+#include <rfir/models/miss_model.h>
+
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <string>
@@ -25,7 +27,7 @@ struct TGraphSmootherOptions : public mrpt::config::CLoadableOptions {
      * no negative information: measured worse on 60 mm readers (docs/slam.md). */
     double flat_min_half_size = 0.1;
     /** Share of the half-size over which the flat-inside shape is smoothed. */
-    double read_edge_smoothing = 0.1;
+    double read_edge_smoothing = rfir::models::kMissEdgeSmoothing;
     /** Negative information: a polled reader that did not read a tag says it
      * was not in its square with this probability (0: no such factors). */
     double detection_probability = 0.95;

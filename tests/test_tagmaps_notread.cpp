@@ -23,13 +23,25 @@ rfir::obs::CObservationRFIDReaders::Ptr poll(double h, std::vector<std::string> 
     return o;
 }
 
+/** The map written to a stream and read back. */
+void roundTrip(CRFIDTagParticleMap& m) {
+    mrpt::io::CMemoryStream buf;
+    auto out = mrpt::serialization::archiveFrom(buf);
+    out << m;
+    buf.Seek(0);
+    auto in = mrpt::serialization::archiveFrom(buf);
+    in >> m;
+}
+
 /** "G" read once from x = 0 (its particles over x in [0.4 - h, 0.4 + h]),
  * then `n` empty polls from x = `to` (spaced `step` apart): the share of
  * its particles beyond x = `edge`. `revisit`: G is read again on a second
- * visit before the polls. */
+ * visit before the polls; `reload`: the map is saved and loaded before
+ * them. */
 double shareBeyondAfterEmptyPolls(double pd, double h, double to, int n,
                                   double step = 0.01, uint64_t window = 30,
-                                  double edge = 0.45, bool revisit = false) {
+                                  double edge = 0.45, bool revisit = false,
+                                  bool reload = false) {
     CRFIDTagParticleMap m;
     m.insertionOptions.seed = 5;
     m.insertionOptions.negativeInformation = pd;
@@ -39,6 +51,7 @@ double shareBeyondAfterEmptyPolls(double pd, double h, double to, int n,
         m.insertObservation(*poll(h, {"X"}), pose3({3.0, 0.0, 0.0}));
         m.insertObservation(*poll(h, {"G"}), pose3({0.0, 0.0, 0.0}));
     }
+    if (reload) roundTrip(m);
     for (int i = 0; i < n; i++)
         m.insertObservation(*poll(h, {}), pose3({to + step * i, 0.0, 0.0}));
     const auto pts = m.getTag("G")->estimator->smoothedParticles();
@@ -102,6 +115,18 @@ TEST(TagMapNotRead, RevisitedTagsAreLeftAlone) {
     };
     EXPECT_GT(revisited(0), 0.25);
     EXPECT_EQ(revisited(0.5), revisited(0));
+}
+
+// Which tags the polls may push out comes from each tag's visits and last
+// read and from the map's step count: a map saved and loaded again between
+// G's read and the polls pushes G out exactly as the map never saved does.
+TEST(TagMapNotRead, ALoadedMapKnowsItsRecentReads) {
+    const auto pushed = [](bool reload) {
+        return shareBeyondAfterEmptyPolls(0.5, 0.15, 0.15, 10, 0.01, 30, 0.45, false,
+                                          reload);
+    };
+    EXPECT_LT(pushed(true), 0.5 * shareBeyondAfterEmptyPolls(0, 0.15, 0.15, 10));
+    EXPECT_EQ(pushed(true), pushed(false));
 }
 
 TEST(TagMapNotRead, OptionsSurviveSerialization) {

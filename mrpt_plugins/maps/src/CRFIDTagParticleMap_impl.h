@@ -364,15 +364,26 @@ struct CRFIDTagParticleMapImpl {
         if (m.m_notReadTravel >= 0 && travel - m.m_notReadTravel < kNotReadTravel) return;
         m.m_notReadTravel = travel;
         const uint64_t now = m.m_track[0].steps;
+        std::vector<size_t> ks;  // the readers that missed one tag
         for (auto& [id, e] : m.m_tags) {
             if (now - e.lastReadStep >= io.negativeWindow || e.visits > 1) continue;
-            // One update per reader, each judged against the estimate the
-            // last one left (docs/slam.md: one update per tag and instant
-            // was tried and measured).
+            // One update per tag and observation, the terms of its unread
+            // readers summed (their product is the miss likelihood); each
+            // reader's reach is judged against the estimate before it. One
+            // update per reader cost PS a smoother step each (docs/slam.md,
+            // "Its cost").
+            ks.clear();
             for (size_t k = 0; k < unread.size(); k++)
-                if (unread.missed(k, id, e.estimate.mean))
-                    update(
-                        m, e, [&](const auto& p) { return unread.logLik(k, p); }, rng);
+                if (unread.missed(k, id, e.estimate.mean)) ks.push_back(k);
+            if (ks.empty()) continue;
+            update(
+                m, e,
+                [&](const auto& p) {
+                    double s = 0;
+                    for (const size_t k : ks) s += unread.logLik(k, p);
+                    return s;
+                },
+                rng);
         }
     }
 

@@ -6,8 +6,10 @@
 #include "test_tagmaps_sim.h"
 
 #include <gtest/gtest.h>
+
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/serialization/CArchive.h>
+#include <cstdio>
 
 using namespace tagmaps_test;
 using rfir::maps::CRFIDTagParticleMap;
@@ -127,6 +129,39 @@ TEST(TagMapNotRead, ALoadedMapKnowsItsRecentReads) {
     };
     EXPECT_LT(pushed(true), 0.5 * shareBeyondAfterEmptyPolls(0, 0.15, 0.15, 10));
     EXPECT_EQ(pushed(true), pushed(false));
+}
+
+// An observation is one update of a tag, however many of its readers
+// missed it (their miss terms summed): for PS-SLAM an update is a step of
+// the tag's smoother, and one per reader cost a step each and moved its lag
+// window by the number of readers (docs/slam.md, "Its cost").
+TEST(TagMapNotRead, AnObservationsMissesAreOneUpdate) {
+    // G about (0.4, 0), its particles over [0.25, 0.55] x [-0.15, 0.15].
+    // Polled from x = 0.15: A's square is [0.40, 0.70] x [-0.15, 0.15]; B,
+    // 0.2 m to its left, covers [0.40, 0.70] x [0.05, 0.35], and pushes G's
+    // particles in it to the right (-y). Neither reads G.
+    const auto afterPoll = [](bool withB) {
+        CRFIDTagParticleMap m;
+        m.insertionOptions.seed = 5;
+        m.insertionOptions.negativeInformation = 0.5;
+        m.insertObservation(*poll(0.15, {"G"}), pose3({0.0, 0.0, 0.0}));
+        const uint64_t before = m.getTag("G")->estimator->updateCount();
+        auto o = poll(0.15, {});
+        if (withB) {
+            rfir::obs::CObservationRFIDReaders::TReading b;
+            b.reader = reader("B", 0.4, 0.2, 0.15);
+            o->readings.push_back(b);
+        }
+        m.insertObservation(*o, pose3({0.15, 0.0, 0.0}));
+        const auto& e = *m.getTag("G");
+        return std::make_pair(e.estimator->updateCount() - before, e.estimate.mean.y);
+    };
+    const auto [updatesA, yA] = afterPoll(false);
+    const auto [updatesAB, yAB] = afterPoll(true);
+    EXPECT_EQ(updatesA, 1u);
+    EXPECT_EQ(updatesAB, 1u);    // one per reader: 2
+    EXPECT_LT(yAB, yA - 0.005);  // and B's term is in it
+    std::printf("G's mean y after A's miss %.4f, after A's and B's %.4f\n", yA, yAB);
 }
 
 TEST(TagMapNotRead, OptionsSurviveSerialization) {

@@ -25,6 +25,24 @@ rfir::obs::CObservationRFIDReaders::Ptr poll(double h, std::vector<std::string> 
     return o;
 }
 
+/** Adds reader `id` (half-size h, at (x, y) on the robot) reading nothing. */
+void addSilentReader(rfir::obs::CObservationRFIDReaders& o, const std::string& id,
+                     double x, double y, double h) {
+    rfir::obs::CObservationRFIDReaders::TReading rd;
+    rd.reader = reader(id, x, y, h);
+    o.readings.push_back(rd);
+}
+
+/** A map (seed 5, negative_information pd) that read "G" once from x = 0
+ * with a 300 mm reader: G's particles over [0.25, 0.55] x [-0.15, 0.15]. */
+CRFIDTagParticleMap mapThatReadG(double pd) {
+    CRFIDTagParticleMap m;
+    m.insertionOptions.seed = 5;
+    m.insertionOptions.negativeInformation = pd;
+    m.insertObservation(*poll(0.15, {"G"}), pose3({0.0, 0.0, 0.0}));
+    return m;
+}
+
 /** The map written to a stream and read back. */
 void roundTrip(CRFIDTagParticleMap& m) {
     mrpt::io::CMemoryStream buf;
@@ -141,17 +159,10 @@ TEST(TagMapNotRead, AnObservationsMissesAreOneUpdate) {
     // 0.2 m to its left, covers [0.40, 0.70] x [0.05, 0.35], and pushes G's
     // particles in it to the right (-y). Neither reads G.
     const auto afterPoll = [](bool withB) {
-        CRFIDTagParticleMap m;
-        m.insertionOptions.seed = 5;
-        m.insertionOptions.negativeInformation = 0.5;
-        m.insertObservation(*poll(0.15, {"G"}), pose3({0.0, 0.0, 0.0}));
+        CRFIDTagParticleMap m = mapThatReadG(0.5);
         const uint64_t before = m.getTag("G")->estimator->updateCount();
         auto o = poll(0.15, {});
-        if (withB) {
-            rfir::obs::CObservationRFIDReaders::TReading b;
-            b.reader = reader("B", 0.4, 0.2, 0.15);
-            o->readings.push_back(b);
-        }
+        if (withB) addSilentReader(*o, "B", 0.4, 0.2, 0.15);
         m.insertObservation(*o, pose3({0.15, 0.0, 0.0}));
         const auto& e = *m.getTag("G");
         return std::make_pair(e.estimator->updateCount() - before, e.estimate.mean.y);
@@ -170,13 +181,8 @@ TEST(TagMapNotRead, OptionsSurviveSerialization) {
     m.insertionOptions.negativeWindow = 12;
     m.insertionOptions.negativeMinHalfSize = 0.07;
     m.likelihoodOptions.robotNegativeInformation = 0.3;
-    mrpt::io::CMemoryStream buf;
-    auto out = mrpt::serialization::archiveFrom(buf);
-    out << m;
-    buf.Seek(0);
-    CRFIDTagParticleMap back;
-    auto in = mrpt::serialization::archiveFrom(buf);
-    in >> back;
+    CRFIDTagParticleMap back = m;
+    roundTrip(back);
     EXPECT_EQ(back.insertionOptions.negativeInformation, 0.4);
     EXPECT_EQ(back.insertionOptions.negativeWindow, 12u);
     EXPECT_EQ(back.insertionOptions.negativeMinHalfSize, 0.07);
@@ -188,20 +194,12 @@ TEST(TagMapNotRead, OptionsSurviveSerialization) {
 // a known tag is neither updated by its read nor pushed out by the readers
 // that missed it; an observation of known tags only changes nothing.
 TEST(TagMapNotRead, InsertNewTagsLeavesKnownTagsAlone) {
-    auto known = [] {
-        CRFIDTagParticleMap m;
-        m.insertionOptions.seed = 5;
-        m.insertionOptions.negativeInformation = 0.5;
-        m.insertObservation(*poll(0.15, {"G"}), pose3({0.0, 0.0, 0.0}));
-        return m;
-    };
+    auto known = [] { return mapThatReadG(0.5); };
     // G's particles are over x in [0.25, 0.55]. From x = 0.05, reader A
     // (square [0.3, 0.6]) reads G and N; B, 0.5 m ahead (square [0.4, 0.7]),
     // reads nothing: each of the two would move G.
     auto o = poll(0.15, {"G", "N"});
-    rfir::obs::CObservationRFIDReaders::TReading b;
-    b.reader = reader("B", 0.5, 0.0, 0.15);
-    o->readings.push_back(b);
+    addSilentReader(*o, "B", 0.5, 0.0, 0.15);
     const mrpt::poses::CPose2D at(0.05, 0.0, 0.0);
     CRFIDTagParticleMap all = known(), fresh = known();
     all.insertObservation(*o, mrpt::poses::CPose3D(at));
@@ -235,9 +233,7 @@ TEST(TagMapNotRead, RobotMissesTellPosesTheFlatReadCannot) {
     m.insertionOptions.seed = 5;
     m.insertObservation(*poll(0.15, {"T"}), pose3({0.0, 0.0, 0.0}));
     auto o = poll(0.15, {"T"});
-    rfir::obs::CObservationRFIDReaders::TReading b;
-    b.reader = reader("B", 0.4, 0.2, 0.15);
-    o->readings.push_back(b);
+    addSilentReader(*o, "B", 0.4, 0.2, 0.15);
     const auto weigh = [&](double pd, double y, double* base) {
         m.likelihoodOptions.robotNegativeInformation = pd;
         CRFIDTagParticleMap::TRobotReads r;

@@ -159,6 +159,59 @@ TEST(SlamConfig, BadSettingsNameTheKey) {
     EXPECT_THROW(loadSlamConfig(ok, std::string("pff")), std::invalid_argument);
 }
 
+namespace {
+/** A read of a tag `local` (robot frame) from pose `at`, by a reader of
+ * half side `half` centred on the robot's x axis at 0.1 m. */
+TAnchor anchorSeen(const char* id, const mrpt::poses::CPose2D& at,
+                   const mrpt::math::TPoint2D& local, double half) {
+    TAnchor a;
+    a.det.id = id;
+    a.det.a = 0.1;
+    a.det.halfX = a.det.halfY = half;
+    at.composePoint(local.x, local.y, a.x, a.y);
+    return a;
+}
+
+/** Share of the resetting's poses within 0.1 rad and 0.15 m of `truth`. */
+double shareNear(const std::vector<mrpt::poses::CPose2D>& ps,
+                 const mrpt::poses::CPose2D& truth) {
+    size_t near = 0;
+    for (const auto& p : ps)
+        near += std::abs(mrpt::math::wrapToPi(p.phi() - truth.phi())) < 0.1 &&
+                p.distanceTo(truth) < 0.15;
+    return double(near) / double(ps.size());
+}
+}  // namespace
+
+TEST(SlamKidnap, PairsOfTheRunGiveTheHeading) {
+    // The robot read A, drove about a metre, and reads B; the odometry has
+    // its own frame. Two 60 mm reads a metre apart fix the heading within
+    // about 0.06 rad, so every pose drawn from the pair is near the truth,
+    // while uniform headings leave almost none there.
+    const mrpt::poses::CPose2D now(2, 1, 0.7), before = now + mrpt::poses::CPose2D(-1, 0.2, -0.3);
+    const mrpt::poses::CPose2D odoBefore(10, -5, 2.0), odoNow = odoBefore + (now - before);
+    const double half = 0.03;
+    const std::vector<TRunAnchor> run{{anchorSeen("A", before, {0.12, 0.02}, half), odoBefore}};
+    const std::vector<TAnchor> b{anchorSeen("B", now, {0.08, -0.02}, half)};
+    TKidnapOptions o;
+    o.keep_heading_share = 0;
+    o.pair_heading_share = 1;
+    rfir::models::TRandom rng(9);
+    const auto paired = resettingPoses(b, odoNow, run, 200, 0, o, rng);
+    ASSERT_EQ(paired.size(), 200u);
+    EXPECT_EQ(shareNear(paired, now), 1.0);
+    for (const auto& p : paired) {  // and each explains this step's read
+        const auto local = mrpt::poses::CPose2D(b[0].x, b[0].y, 0) - p;
+        EXPECT_LE(std::abs(local.x() - 0.1), half + 1e-9);
+        EXPECT_LE(std::abs(local.y()), half + 1e-9);
+    }
+    o.pair_min_distance = 5;  // A too close to pair: uniform headings
+    EXPECT_LT(shareNear(resettingPoses(b, odoNow, run, 200, 0, o, rng), now), 0.2);
+    o.pair_min_distance = 0.5;
+    o.pair_heading_share = 0;
+    EXPECT_LT(shareNear(resettingPoses(b, odoNow, run, 200, 0, o, rng), now), 0.2);
+}
+
 TEST(SlamKidnap, ResettingPosesExplainTheDetection) {
     rfir::models::TRandom rng(5);
     TAnchor a;

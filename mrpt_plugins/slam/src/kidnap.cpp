@@ -15,7 +15,8 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         c, s,
         {"enabled", "collapse_loglik", "collapse_steps", "min_tags", "max_gap",
          "evidence_drop", "persist_tags", "fast_rate", "slow_rate", "inject_fraction",
-         "keep_heading_share", "heading_std", "map_new_tags_in_run", "rb_loglik_scale"});
+         "keep_heading_share", "heading_std", "pair_heading_share", "pair_min_distance",
+         "map_new_tags_in_run", "rb_loglik_scale"});
     enabled = sec.getBool("enabled", enabled);
     // A mean log-likelihood per detection beyond +-1000 means nothing: a
     // density of e^1000 or a collapse on every step.
@@ -35,6 +36,10 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     keep_heading_share =
         sec.getDouble("keep_heading_share", keep_heading_share, R::closed(0, 1));
     heading_std = sec.getDouble("heading_std", heading_std, R::closed(0, M_PI));
+    pair_heading_share =
+        sec.getDouble("pair_heading_share", pair_heading_share, R::closed(0, 1));
+    pair_min_distance =
+        sec.getDouble("pair_min_distance", pair_min_distance, R::closed(0, 1e3));
     map_new_tags_in_run = sec.getBool("map_new_tags_in_run", map_new_tags_in_run);
     rb_loglik_scale =
         sec.getDouble("rb_loglik_scale", rb_loglik_scale, R::aboveZero(1e6));
@@ -63,6 +68,10 @@ void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     c.write(s, "keep_heading_share", keep_heading_share, -1, -1,
             "share of those keeping the current heading");
     c.write(s, "heading_std", heading_std, -1, -1, "their heading std [rad]");
+    c.write(s, "pair_heading_share", pair_heading_share, -1, -1,
+            "share of the others heading from two landmarks of the run");
+    c.write(s, "pair_min_distance", pair_min_distance, -1, -1,
+            "the two landmarks at least this far apart [m]");
     c.write(s, "map_new_tags_in_run", map_new_tags_in_run, -1, -1,
             "while a run is open, RFID tags never mapped are still mapped");
     c.write(s, "rb_loglik_scale", rb_loglik_scale, -1, -1,
@@ -97,39 +106,90 @@ bool CKidnapMonitor::update(const TStepEvidence& e) {
     return true;
 }
 
-mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
-                                    rfir::models::TRandom& rng) {
-    const TDetection& d = a.det;
-    double sx, sy;  // the landmark seen from the pose, robot frame
-    if (d.kind == TDetection::Kind::RFID) {
-        sx = d.a + rng.drawUniform(-d.halfX, d.halfX);
-        sy = d.b + rng.drawUniform(-d.halfY, d.halfY);
-    } else {
-        const double r = d.a + rng.drawGaussian1D(0, std::max(d.stdRange, 1e-3));
-        const double b = d.b + rng.drawGaussian1D(0, std::max(d.stdBearing, 1e-3));
-        // The range-bearing inverse model, in the robot frame.
-        const auto p = rfir::models::rangeBearingToPoint(
-            {d.sensor.x(), d.sensor.y(), d.sensor.phi()}, r, b);
-        sx = p.x;
-        sy = p.y;
-    }
+void CRunAnchors::add(const std::vector<TAnchor>& anchors,
+                      const mrpt::poses::CPose2D& odo) {
+    // A run lasts a few seconds; the cap only bounds a pathological one.
+    constexpr size_t kMax = 256;
+    for (const auto& a : anchors) v_.push_back({a, odo});
+    if (v_.size() > kMax) v_.erase(v_.begin(), v_.end() - kMax);
+}
+
+namespace {
+/** Where the detection puts its landmark, robot frame: a point drawn in the
+ * reader's square (the step model's support), or the range-bearing read
+ * with its noise. */
+mrpt::math::TPoint2D sensedPoint(const TDetection& d, rfir::models::TRandom& rng) {
+    if (d.kind == TDetection::Kind::RFID)
+        return {d.a + rng.drawUniform(-d.halfX, d.halfX),
+                d.b + rng.drawUniform(-d.halfY, d.halfY)};
+    const double r = d.a + rng.drawGaussian1D(0, std::max(d.stdRange, 1e-3));
+    const double b = d.b + rng.drawGaussian1D(0, std::max(d.stdBearing, 1e-3));
+    // The range-bearing inverse model, in the robot frame.
+    return rfir::models::rangeBearingToPoint({d.sensor.x(), d.sensor.y(), d.sensor.phi()},
+                                             r, b);
+}
+
+mrpt::poses::CPose2D poseFromSensed(const TAnchor& a, const mrpt::math::TPoint2D& s,
+                                    double phi) {
     const auto t = rfir::models::robotPositionFromRead({a.x, a.y}, std::cos(phi),
-                                                       std::sin(phi), sx, sy);
+                                                       std::sin(phi), s.x, s.y);
     return {t.x, t.y, phi};
 }
 
-std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& anchors,
+/** A pose from anchor `b` of this step with the heading that turns the
+ * vector from `a` (an earlier step's, moved into this step's frame by the
+ * odometry between them) to `b` onto the map's vector between the two. */
+mrpt::poses::CPose2D poseFromPair(const TRunAnchor& a, const TAnchor& b,
+                                  const mrpt::poses::CPose2D& odo,
+                                  rfir::models::TRandom& rng) {
+    const auto sa = sensedPoint(a.a.det, rng);
+    const auto sb = sensedPoint(b.det, rng);
+    const mrpt::poses::CPose2D rel = a.odo - odo;  // a's step in this step's frame
+    double ax, ay;
+    rel.composePoint(sa.x, sa.y, ax, ay);
+    const double phi = std::atan2(b.y - a.a.y, b.x - a.a.x) - std::atan2(sb.y - ay, sb.x - ax);
+    return poseFromSensed(b, sb, mrpt::math::wrapToPi(phi));
+}
+
+/** The run's anchors that pair with `b`: another landmark, far enough. */
+std::vector<const TRunAnchor*> partners(const std::vector<TRunAnchor>& run,
+                                        const TAnchor& b, double minDist) {
+    std::vector<const TRunAnchor*> out;
+    for (const auto& r : run)
+        if (r.a.det.id != b.det.id && std::hypot(r.a.x - b.x, r.a.y - b.y) >= minDist)
+            out.push_back(&r);
+    return out;
+}
+}  // namespace
+
+mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
+                                    rfir::models::TRandom& rng) {
+    return poseFromSensed(a, sensedPoint(a.det, rng), phi);
+}
+
+std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& now,
+                                                 const mrpt::poses::CPose2D& odo,
+                                                 const std::vector<TRunAnchor>& run,
                                                  size_t n, double currentPhi,
                                                  const TKidnapOptions& o,
                                                  rfir::models::TRandom& rng) {
     std::vector<mrpt::poses::CPose2D> out;
-    if (anchors.empty()) return out;
+    if (now.empty()) return out;
+    // This step's anchors pair with each other too (no odometry between).
+    std::vector<TRunAnchor> all = run;
+    for (const auto& a : now) all.push_back({a, odo});
     for (size_t i = 0; i < n; i++) {
-        const TAnchor& a = anchors[rng.drawUniform32bit() % anchors.size()];
-        const double phi = rng.drawUniform(0, 1) < o.keep_heading_share
-                               ? currentPhi + rng.drawGaussian1D(0, o.heading_std)
-                               : rng.drawUniform(-M_PI, M_PI);
-        out.push_back(poseFromAnchor(a, mrpt::math::wrapToPi(phi), rng));
+        const TAnchor& b = now[rng.drawUniform32bit() % now.size()];
+        if (rng.drawUniform(0, 1) < o.keep_heading_share) {
+            const double phi = currentPhi + rng.drawGaussian1D(0, o.heading_std);
+            out.push_back(poseFromAnchor(b, mrpt::math::wrapToPi(phi), rng));
+            continue;
+        }
+        const auto ps = partners(all, b, o.pair_min_distance);
+        if (!ps.empty() && rng.drawUniform(0, 1) < o.pair_heading_share)
+            out.push_back(poseFromPair(*ps[rng.drawUniform32bit() % ps.size()], b, odo, rng));
+        else
+            out.push_back(poseFromAnchor(b, rng.drawUniform(-M_PI, M_PI), rng));
     }
     return out;
 }

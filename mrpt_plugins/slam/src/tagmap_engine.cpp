@@ -75,6 +75,8 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         corr_ = CMapCorrection(cfg_.slam.map_correction_min_std,
                                cfg_.slam.map_correction_max_tags);
         pose_ = start;
+        odo_ = start;
+        runAnchors_.clear();
     }
     void step(const TSlamInput& in) override;
     mrpt::poses::CPose2D pose() const override { return pose_; }
@@ -203,6 +205,8 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     mutable std::vector<double> baseLogLik_;
     std::optional<mrpt::poses::CPose2D> predictedForInsert_;
     mrpt::poses::CPose2D pose_;
+    mrpt::poses::CPose2D odo_;  //!< the odometry's own pose (run anchors)
+    CRunAnchors runAnchors_;
     double t_ = 0;                    //!< this step's time
     std::vector<double> resetTimes_;  //!< when sensor resetting fired
 };
@@ -296,12 +300,19 @@ void CTagMapEngine::checkKidnap() {
     if (e.reads == 0) return;
     const bool reset = kidnap_.update(e);
     if (kidnap_.suspicious() || reset) mapThisStep_ = false;
-    if (!reset) return;
+    const auto anchors = knownAnchors(map_, dets_);
+    if (!reset) {
+        // The open run's anchors give the resetting its headings.
+        if (kidnap_.runSteps() <= 1) runAnchors_.clear();  // none, or a new run
+        if (kidnap_.suspicious()) runAnchors_.add(anchors, odo_);
+        return;
+    }
     resetTimes_.push_back(t_);
     const size_t M = pf_.m_particles.size();
     const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
-    const auto poses = resettingPoses(knownAnchors(map_, dets_), n, pf_.meanPose().phi(),
-                                      cfg_.kidnap, rng_);
+    const auto poses = resettingPoses(anchors, odo_, runAnchors_.all(), n,
+                                      pf_.meanPose().phi(), cfg_.kidnap, rng_);
+    runAnchors_.clear();
     // Mixture MCL (Thrun et al. 2001): each drawn pose is weighed by this
     // step's reads with the weighing's own callable, on the best prior
     // weight, so that resampling keeps the poses that explain every read,
@@ -333,6 +344,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
         insert(pose_);
         return;
     }
+    if (in.odometryIncrement) odo_ = odo_ + *in.odometryIncrement;
     literal_ = map_.updateTagsBeforeWeighing();
     // 2-4. MRPT's CParticleFilter::executeOn: propagate every particle by a
     // draw of the odometry Gaussian (engine's generator), then afterMotion()

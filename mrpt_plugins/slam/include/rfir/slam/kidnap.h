@@ -49,11 +49,19 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions {
     unsigned persist_tags = 0;
     double fast_rate = 0.5;        //!< per weighing step (0, 1]
     double slow_rate = 0.02;       //!< per weighing step (0, 1]
-    double inject_fraction = 0.5;  //!< of the robot particles, per resetting
+    double inject_fraction = 1.0;  //!< of the robot particles, per resetting
     /** Share of injected particles that keep the current heading estimate
      * (with heading_std noise); the rest get a uniform heading. */
-    double keep_heading_share = 0.5;
+    double keep_heading_share = 0.2;
     double heading_std = 0.1;  //!< rad
+    /** Share of the others whose heading comes from two landmarks of the
+     * disagreeing run (the map's vector between them against the vector the
+     * odometry and the reads give); the rest get a uniform heading. A
+     * uniform heading leaves a few particles within 0.1 rad of the truth,
+     * and the resetting kept whichever of them the next reads favoured. */
+    double pair_heading_share = 0.8;
+    /** m: two landmarks give a heading only this far apart in the map. */
+    double pair_min_distance = 0.5;
     /** Range-and-bearing reads enter the detector's evidence times this.
      * Their Gaussian (1 cm range noise) makes a landmark 15 cm off cost
      * about 110, as much as an RFID tag 14 reader half-sides away. Measured
@@ -95,6 +103,7 @@ class CKidnapMonitor {
     bool update(const TStepEvidence& e);
     /** A run of disagreeing steps is open: do not map from this pose. */
     bool suspicious() const { return bad_ > 0; }
+    unsigned runSteps() const { return bad_; }  //!< disagreeing steps in the open run
     size_t resets() const { return resets_; }
 
   private:
@@ -117,13 +126,36 @@ struct TAnchor {
     double x = 0, y = 0;  //!< landmark estimate, world frame
 };
 
+/** An anchor of an earlier step of the disagreeing run, with the odometry
+ * pose of its step (any frame: only differences are used). */
+struct TRunAnchor {
+    TAnchor a;
+    mrpt::poses::CPose2D odo;
+};
+
+/** The anchors of the open run of disagreeing steps (bounded: the run lasts
+ * seconds, and the oldest anchors go first). */
+class CRunAnchors {
+  public:
+    void add(const std::vector<TAnchor>& anchors, const mrpt::poses::CPose2D& odo);
+    void clear() { v_.clear(); }
+    const std::vector<TRunAnchor>& all() const { return v_; }
+
+  private:
+    std::vector<TRunAnchor> v_;
+};
+
 /** A robot pose drawn so that anchor `a` is consistent with its detection,
  * with heading `phi`. */
 mrpt::poses::CPose2D poseFromAnchor(const TAnchor& a, double phi,
                                     rfir::models::TRandom& rng);
 
-/** n poses for sensor resetting from the anchors of this step. */
-std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& anchors,
+/** n poses for sensor resetting from the anchors of this step (`now`, at
+ * odometry pose `odo`), with headings from pairs of them and the run's
+ * earlier anchors (`run`) where `pair_heading_share` says. */
+std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& now,
+                                                 const mrpt::poses::CPose2D& odo,
+                                                 const std::vector<TRunAnchor>& run,
                                                  size_t n, double currentPhi,
                                                  const TKidnapOptions& o,
                                                  rfir::models::TRandom& rng);

@@ -188,10 +188,13 @@ TEST(SlamKidnap, PairsOfTheRunGiveTheHeading) {
     // its own frame. Two 60 mm reads a metre apart fix the heading within
     // about 0.06 rad, so every pose drawn from the pair is near the truth,
     // while uniform headings leave almost none there.
-    const mrpt::poses::CPose2D now(2, 1, 0.7), before = now + mrpt::poses::CPose2D(-1, 0.2, -0.3);
-    const mrpt::poses::CPose2D odoBefore(10, -5, 2.0), odoNow = odoBefore + (now - before);
+    const mrpt::poses::CPose2D now(2, 1, 0.7),
+        before = now + mrpt::poses::CPose2D(-1, 0.2, -0.3);
+    const mrpt::poses::CPose2D odoBefore(10, -5, 2.0),
+        odoNow = odoBefore + (now - before);
     const double half = 0.03;
-    const std::vector<TRunAnchor> run{{anchorSeen("A", before, {0.12, 0.02}, half), odoBefore}};
+    const std::vector<TRunAnchor> run{
+        {anchorSeen("A", before, {0.12, 0.02}, half), odoBefore}};
     const std::vector<TAnchor> b{anchorSeen("B", now, {0.08, -0.02}, half)};
     TKidnapOptions o;
     o.keep_heading_share = 0;

@@ -147,7 +147,8 @@ mrpt::poses::CPose2D poseFromPair(const TRunAnchor& a, const TAnchor& b,
     const mrpt::poses::CPose2D rel = a.odo - odo;  // a's step in this step's frame
     double ax, ay;
     rel.composePoint(sa.x, sa.y, ax, ay);
-    const double phi = std::atan2(b.y - a.a.y, b.x - a.a.x) - std::atan2(sb.y - ay, sb.x - ax);
+    const double phi =
+        std::atan2(b.y - a.a.y, b.x - a.a.x) - std::atan2(sb.y - ay, sb.x - ax);
     return poseFromSensed(b, sb, mrpt::math::wrapToPi(phi));
 }
 
@@ -178,16 +179,20 @@ std::vector<mrpt::poses::CPose2D> resettingPoses(const std::vector<TAnchor>& now
     // This step's anchors pair with each other too (no odometry between).
     std::vector<TRunAnchor> all = run;
     for (const auto& a : now) all.push_back({a, odo});
+    std::vector<std::vector<const TRunAnchor*>> pairsOf;  // per anchor of `now`
+    for (const auto& b : now) pairsOf.push_back(partners(all, b, o.pair_min_distance));
     for (size_t i = 0; i < n; i++) {
-        const TAnchor& b = now[rng.drawUniform32bit() % now.size()];
+        const size_t k = rng.drawUniform32bit() % now.size();
+        const TAnchor& b = now[k];
         if (rng.drawUniform(0, 1) < o.keep_heading_share) {
             const double phi = currentPhi + rng.drawGaussian1D(0, o.heading_std);
             out.push_back(poseFromAnchor(b, mrpt::math::wrapToPi(phi), rng));
             continue;
         }
-        const auto ps = partners(all, b, o.pair_min_distance);
+        const auto& ps = pairsOf[k];
         if (!ps.empty() && rng.drawUniform(0, 1) < o.pair_heading_share)
-            out.push_back(poseFromPair(*ps[rng.drawUniform32bit() % ps.size()], b, odo, rng));
+            out.push_back(
+                poseFromPair(*ps[rng.drawUniform32bit() % ps.size()], b, odo, rng));
         else
             out.push_back(poseFromAnchor(b, rng.drawUniform(-M_PI, M_PI), rng));
     }

@@ -300,18 +300,18 @@ void CTagMapEngine::checkKidnap() {
     if (e.reads == 0) return;
     const bool reset = kidnap_.update(e);
     if (kidnap_.suspicious() || reset) mapThisStep_ = false;
-    const auto anchors = knownAnchors(map_, dets_);
     if (!reset) {
-        // The open run's anchors give the resetting its headings.
+        // The open run's anchors give the resetting its headings (looked up
+        // only while a run is open: most steps have none).
         if (kidnap_.runSteps() <= 1) runAnchors_.clear();  // none, or a new run
-        if (kidnap_.suspicious()) runAnchors_.add(anchors, odo_);
+        if (kidnap_.suspicious()) runAnchors_.add(knownAnchors(map_, dets_), odo_);
         return;
     }
     resetTimes_.push_back(t_);
     const size_t M = pf_.m_particles.size();
     const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
-    const auto poses = resettingPoses(anchors, odo_, runAnchors_.all(), n,
-                                      pf_.meanPose().phi(), cfg_.kidnap, rng_);
+    const auto poses = resettingPoses(knownAnchors(map_, dets_), odo_, runAnchors_.all(),
+                                      n, pf_.meanPose().phi(), cfg_.kidnap, rng_);
     runAnchors_.clear();
     // Mixture MCL (Thrun et al. 2001): each drawn pose is weighed by this
     // step's reads with the weighing's own callable, on the best prior

@@ -51,7 +51,8 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions {
     double slow_rate = 0.02;       //!< per weighing step (0, 1]
     double inject_fraction = 1.0;  //!< of the robot particles, per resetting
     /** Share of injected particles that keep the current heading estimate
-     * (with heading_std noise); the rest get a uniform heading. */
+     * (with heading_std noise), for a filter that drifted rather than was
+     * carried; the rest as pair_heading_share says. */
     double keep_heading_share = 0.2;
     double heading_std = 0.1;  //!< rad
     /** Share of the others whose heading comes from two landmarks of the

@@ -194,14 +194,13 @@ TEST(TagMapNotRead, OptionsSurviveSerialization) {
 // a known tag is neither updated by its read nor pushed out by the readers
 // that missed it; an observation of known tags only changes nothing.
 TEST(TagMapNotRead, InsertNewTagsLeavesKnownTagsAlone) {
-    auto known = [] { return mapThatReadG(0.5); };
     // G's particles are over x in [0.25, 0.55]. From x = 0.05, reader A
     // (square [0.3, 0.6]) reads G and N; B, 0.5 m ahead (square [0.4, 0.7]),
     // reads nothing: each of the two would move G.
     auto o = poll(0.15, {"G", "N"});
     addSilentReader(*o, "B", 0.5, 0.0, 0.15);
     const mrpt::poses::CPose2D at(0.05, 0.0, 0.0);
-    CRFIDTagParticleMap all = known(), fresh = known();
+    CRFIDTagParticleMap all = mapThatReadG(0.5), fresh = mapThatReadG(0.5);
     all.insertObservation(*o, mrpt::poses::CPose3D(at));
     ASSERT_TRUE(fresh.insertNewTags(*o, at));
     // The new tag: over A's square.
@@ -210,14 +209,14 @@ TEST(TagMapNotRead, InsertNewTagsLeavesKnownTagsAlone) {
     EXPECT_NEAR(fresh.getTag("N")->estimate.mean.y, 0.0, 0.03);
     EXPECT_EQ(fresh.tagCount(), 2u);
     // The known tag: untouched here, moved by the full insertion.
-    const CRFIDTagParticleMap before = known();
+    const CRFIDTagParticleMap before = mapThatReadG(0.5);
     const auto& g0 = before.getTag("G")->estimate.mean;
     EXPECT_EQ(fresh.getTag("G")->estimate.mean.x, g0.x);
     EXPECT_EQ(fresh.getTag("G")->detections, before.getTag("G")->detections);
     EXPECT_NE(all.getTag("G")->estimate.mean.x, g0.x);
     EXPECT_GT(all.getTag("G")->detections, before.getTag("G")->detections);
     // Known tags only: nothing is inserted.
-    CRFIDTagParticleMap again = known();
+    CRFIDTagParticleMap again = mapThatReadG(0.5);
     EXPECT_FALSE(again.insertNewTags(*poll(0.15, {"G"}), at));
     EXPECT_EQ(again.getTag("G")->estimate.mean.x, g0.x);
     EXPECT_EQ(again.tagCount(), 1u);

@@ -205,7 +205,9 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     mutable std::vector<double> baseLogLik_;
     std::optional<mrpt::poses::CPose2D> predictedForInsert_;
     mrpt::poses::CPose2D pose_;
-    mrpt::poses::CPose2D odo_;  //!< the odometry's own pose (run anchors)
+    /** The odometry's own pose: dead reckoning's estimate, and the run
+     * anchors' frame. */
+    mrpt::poses::CPose2D odo_;
     CRunAnchors runAnchors_;
     double t_ = 0;                    //!< this step's time
     std::vector<double> resetTimes_;  //!< when sensor resetting fired
@@ -338,13 +340,13 @@ void CTagMapEngine::step(const TSlamInput& in) {
         obs_.push_back(in.rb);
         appendDetections(*in.rb, hdr_, dets_);
     }
+    if (in.odometryIncrement) odo_ = odo_ + *in.odometryIncrement;
     if (cfg_.method() == TMethod::Odometry) {
         // Dead reckoning: map the tags from the odometry poses, no correction.
-        if (in.odometryIncrement) pose_ = pose_ + *in.odometryIncrement;
+        pose_ = odo_;
         insert(pose_);
         return;
     }
-    if (in.odometryIncrement) odo_ = odo_ + *in.odometryIncrement;
     literal_ = map_.updateTagsBeforeWeighing();
     // 2-4. MRPT's CParticleFilter::executeOn: propagate every particle by a
     // draw of the odometry Gaussian (engine's generator), then afterMotion()

@@ -162,10 +162,18 @@ TEST(HeadingDrift, LongExplorationStaysWithTheRobot) {
 // confirmation) reset PF 41 and PS 27 times here. Thresholds, stated before
 // the change was measured: no reset, and each method's mean error at most
 // half of the former settings'.
+// Both runs without the loop closures by smoothing, which came later: they
+// take the former settings' triggers for loop closures, and those settings
+// then end at 112 mm (PF) with no reset (docs/slam.md, "Loop closure by
+// smoothing"); the comparison here is of the motion settings under the
+// resetting.
 TEST(StockInis, LongExplorationWithoutResets) {
-    const TEdits former = {{"motion.a3", "0.02"}, {"slam.read_confirm_window", "0"}};
+    const TEdits stock = {{"kidnap.loop_closure_smoothing", "false"}};
+    const TEdits former = {{"motion.a3", "0.02"},
+                           {"slam.read_confirm_window", "0"},
+                           {"kidnap.loop_closure_smoothing", "false"}};
     for (const char* m : {"pf", "ps"})
-        expectHalfTheErrorWithoutResets(m, {}, former, "stock",
+        expectHalfTheErrorWithoutResets(m, stock, former, "stock",
                                         "with the former settings");
 }
 
@@ -191,8 +199,12 @@ TEST(ReadConfirmation, GhostReadsDoNotPullTheWideCloud) {
                   << " resets) confirmed, " << 1e3 * without.robot << " mm ("
                   << without.run.resets << ") unconfirmed, stock " << 1e3 * stock.robot
                   << " mm\n";
-        EXPECT_GE(without.run.resets, 1u) << m << ": the case no longer shows ghosts";
-        EXPECT_EQ(with.run.resets, 0u) << m;
+        // Triggers of the kidnap check: resets, or loop closures by smoothing.
+        const auto triggers = [](const auto& r) {
+            return r.run.resets + r.run.loopClosureTimes.size();
+        };
+        EXPECT_GE(triggers(without), 1u) << m << ": the case no longer shows ghosts";
+        EXPECT_EQ(triggers(with), 0u) << m;
         EXPECT_LE(with.robot, 1.25 * stock.robot) << m;
     }
 }

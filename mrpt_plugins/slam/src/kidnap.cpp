@@ -16,7 +16,7 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
         {"enabled", "collapse_loglik", "collapse_steps", "min_tags", "max_gap",
          "evidence_drop", "persist_tags", "fast_rate", "slow_rate", "inject_fraction",
          "keep_heading_share", "heading_std", "pair_heading_share", "pair_min_distance",
-         "map_new_tags_in_run", "rb_loglik_scale"});
+         "map_new_tags_in_run", "rb_loglik_scale", "loop_closure_smoothing"});
     enabled = sec.getBool("enabled", enabled);
     // A mean log-likelihood per detection beyond +-1000 means nothing: a
     // density of e^1000 or a collapse on every step.
@@ -41,6 +41,8 @@ void TKidnapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
     pair_min_distance =
         sec.getDouble("pair_min_distance", pair_min_distance, R::closed(0, 1e3));
     map_new_tags_in_run = sec.getBool("map_new_tags_in_run", map_new_tags_in_run);
+    loop_closure_smoothing =
+        sec.getBool("loop_closure_smoothing", loop_closure_smoothing);
     rb_loglik_scale =
         sec.getDouble("rb_loglik_scale", rb_loglik_scale, R::aboveZero(1e6));
 }
@@ -76,6 +78,8 @@ void TKidnapOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
             "while a run is open, RFID tags never mapped are still mapped");
     c.write(s, "rb_loglik_scale", rb_loglik_scale, -1, -1,
             "range-bearing log-likelihoods enter the evidence times this");
+    c.write(s, "loop_closure_smoothing", loop_closure_smoothing, -1, -1,
+            "a trigger the smoothed run explains is a loop closure, not a reset");
 }
 
 bool CKidnapMonitor::update(const TStepEvidence& e) {

@@ -96,6 +96,7 @@ TSlamRun runEngine(CSlamEngine& engine, const mrpt::poses::CPose2D& start,
     run.map = engine.landmarks();
     run.resetTimes = engine.resetTimes();
     run.resets = run.resetTimes.size();
+    run.loopClosureTimes = engine.loopClosureTimes();
     return run;
 }
 

@@ -6,6 +6,7 @@
 #include <rfir/slam/slam_engine.h>
 #include <rfir/slam/tagmap_engine.h>
 
+#include "loop_closure.h"
 #include "tagmap_settings.h"
 
 #include <mrpt/bayes/CParticleFilter.h>
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace rfir::slam {
@@ -77,11 +79,17 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         pose_ = start;
         odo_ = start;
         runAnchors_.clear();
+        start_ = start;
+        hist_.clear();
+        histPath_.clear();
+        closureTimes_.clear();
+        rbSeen_ = false;
     }
     void step(const TSlamInput& in) override;
     mrpt::poses::CPose2D pose() const override { return pose_; }
     std::vector<TLandmarkOut> landmarks() const override;
     const std::vector<double>& resetTimes() const override { return resetTimes_; }
+    const std::vector<double>& loopClosureTimes() const override { return closureTimes_; }
 
   private:
     /** @name The stages executeOn runs between the motion and the weighing.
@@ -95,6 +103,9 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     void resolveReads();
     /** After the weighing: the kidnap monitor's step, sensor resetting. */
     void checkKidnap();
+    /** [kidnap] loop_closure_smoothing at a trigger: true if the smoothed run
+     * explained it (tags and robot moved there), false to reset. */
+    bool closeLoop();
     TStepEvidence stepEvidence() const;
     /** A base term of `r`'s reads in the kidnap check's units, those of the
      * RFID step model: range-and-bearing terms rescaled ([kidnap]
@@ -211,6 +222,14 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     CRunAnchors runAnchors_;
     double t_ = 0;                    //!< this step's time
     std::vector<double> resetTimes_;  //!< when sensor resetting fired
+    /** loop_closure_smoothing: the run so far (inputs, and the estimate of
+     * each step before this one), and when a trigger was a loop closure. */
+    mrpt::poses::CPose2D start_;
+    std::vector<TSlamInput> hist_;
+    std::vector<std::pair<double, mrpt::poses::CPose2D>> histPath_;
+    std::vector<double> closureTimes_;
+    bool rbSeen_ = false;     //!< the smoother is RFID only
+    bool closedNow_ = false;  //!< this step was a loop closure
 };
 
 void CTagMapEngine::afterMotion() {
@@ -309,6 +328,7 @@ void CTagMapEngine::checkKidnap() {
         if (kidnap_.suspicious()) runAnchors_.add(knownAnchors(map_, dets_), odo_);
         return;
     }
+    if (cfg_.kidnap.loop_closure_smoothing && !rbSeen_ && closeLoop()) return;
     resetTimes_.push_back(t_);
     const size_t M = pf_.m_particles.size();
     const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
@@ -324,6 +344,32 @@ void CTagMapEngine::checkKidnap() {
         const double ll = weigh(SIZE_MAX, CParticlePose2D(p));
         pf_.replacePose(rng_.drawUniform32bit() % M, p, prior + ll, ll);
     }
+}
+
+bool CTagMapEngine::closeLoop() {
+    TSlamRun soFar;
+    soFar.path = histPath_;
+    soFar.path.emplace_back(t_, pf_.meanPose());  // this step's, before any reset
+    soFar.map = landmarks();
+    soFar.resetTimes = resetTimes_;
+    std::optional<TGraphSmootherResult> res;
+    try {
+        res = smoothedLoopClosure(hist_, start_, soFar, cfg_);
+    } catch (const std::exception&) {
+        return false;  // the solver failed: the resetting, as without the option
+    }
+    if (!res) return false;
+    for (const auto& l : res->run.map)
+        if (const auto* e = map_.getTag(l.id))
+            map_.translateEntry(l.id, false, l.x - e->estimate.mean.x,
+                                l.y - e->estimate.mean.y);
+    pf_.reset(res->run.path.back().second, cfg_.slam.robot_particles,
+              cfg_.slam.start_std_xy, cfg_.slam.start_std_phi, rng_);
+    histPath_.assign(res->run.path.begin(), res->run.path.end() - 1);
+    closureTimes_.push_back(t_);
+    runAnchors_.clear();
+    closedNow_ = true;
+    return true;
 }
 
 void CTagMapEngine::step(const TSlamInput& in) {
@@ -347,6 +393,11 @@ void CTagMapEngine::step(const TSlamInput& in) {
         insert(pose_);
         return;
     }
+    closedNow_ = false;
+    if (cfg_.kidnap.loop_closure_smoothing) {
+        hist_.push_back(in);
+        rbSeen_ = rbSeen_ || in.rb;
+    }
     literal_ = map_.updateTagsBeforeWeighing();
     // 2-4. MRPT's CParticleFilter::executeOn: propagate every particle by a
     // draw of the odometry Gaussian (engine's generator), then afterMotion()
@@ -364,7 +415,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
     // 7. PF/PS with map_correction: the tags mapped from an uncertain robot
     // follow the weighing's correction of it;
     if (cfg_.slam.map_correction)
-        correctMap(!resetTimes_.empty() && resetTimes_.back() == t_);
+        correctMap((!resetTimes_.empty() && resetTimes_.back() == t_) || closedNow_);
     reads_.clear();
     // 8. the estimate, and the tag update of the revisit policies.
     pose_ = pf_.meanPose();
@@ -372,6 +423,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
         insert(predictedForInsert_ ? *predictedForInsert_ : pose_);
     else if (!literal_ && cfg_.kidnap.map_new_tags_in_run)
         insertNewOnly(predictedForInsert_ ? *predictedForInsert_ : pose_);
+    if (cfg_.kidnap.loop_closure_smoothing) histPath_.emplace_back(t_, pose_);
 }
 
 std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {

@@ -178,6 +178,8 @@ std::string statsJson(const rfir::slam::TSlamConfig& cfg, const rfir::slam::TSla
     j["total_time_s"] = printed(run.totalTime);
     j["kidnap_resets"] = run.resets;
     j["kidnap_reset_times_s"] = printed(run.resetTimes);
+    if (!run.loopClosureTimes.empty())
+        j["loop_closure_times_s"] = printed(run.loopClosureTimes);
     if (!smoother.is_null()) j["smoother"] = smoother;
     j["run"] = TJson::parse(identity);
     return rfir::common::dumpJson(j) + "\n";
@@ -353,13 +355,18 @@ int runSlamApp(const TAppArgs& args) {
     const size_t n = data.inputs.size();
     rfir::common::CProgress progress("rfir-slam", n, a.quiet ? nullptr : &std::cerr);
     // Each sensor resetting gets a line when it happens (not only a count).
-    size_t reported = 0;
+    size_t reported = 0, closures = 0;
     const auto run = rfir::slam::runEngine(*engine, start, data.inputs, [&](size_t i) {
         progress.update(i);
         const auto& rt = engine->resetTimes();
         for (; reported < rt.size(); reported++)
             logStream(a) << "rfir-slam: kidnap detected, sensor resetting at t = "
                          << std::fixed << std::setprecision(2) << rt[reported] << " s\n"
+                         << std::defaultfloat;
+        const auto& lc = engine->loopClosureTimes();
+        for (; closures < lc.size(); closures++)
+            logStream(a) << "rfir-slam: loop closure by smoothing at t = " << std::fixed
+                         << std::setprecision(2) << lc[closures] << " s\n"
                          << std::defaultfloat;
     });
     progress.finish();

@@ -76,6 +76,13 @@ struct TKidnapOptions : public mrpt::config::CLoadableOptions {
      * still are (else a drifting filter leaves every tag it meets then out
      * of the map). */
     bool map_new_tags_in_run = true;
+    /** At a trigger, first smooth the run so far offline (graph_smoother.h,
+     * no cut there, the odometry's drift estimated); if the smoothed path
+     * explains the last seconds' reads it was a loop closure after drift,
+     * not a kidnapping: the tags move to their smoothed places and the
+     * robot particles are drawn about the smoothed pose, with no sensor
+     * resetting (docs/slam.md, "Loop closure by smoothing"). RFID only. */
+    bool loop_closure_smoothing = true;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s) override;

@@ -57,6 +57,12 @@ class CSlamEngine {
         static const std::vector<double> none;
         return none;
     }
+    /** Times of the kidnap check's triggers that smoothing took for loop
+     * closures ([kidnap] loop_closure_smoothing), in order. */
+    virtual const std::vector<double>& loopClosureTimes() const {
+        static const std::vector<double> none;
+        return none;
+    }
 };
 
 /** The engine for cfg.slam.method; `hdr` names range-bearing landmarks. */
@@ -69,7 +75,8 @@ struct TSlamRun {
     std::vector<TLandmarkOut> map;
     double totalTime = 0, meanStepTime = 0, maxStepTime = 0;  //!< s, of step() calls
     size_t resets = 0;
-    std::vector<double> resetTimes;  //!< s, one per reset
+    std::vector<double> resetTimes;        //!< s, one per reset
+    std::vector<double> loopClosureTimes;  //!< s, triggers taken for loop closures
 };
 
 /** Runs `engine` from `start` over the inputs; `progress(i)` after each step. */

@@ -1,0 +1,57 @@
+#include "loop_closure.h"
+
+#include "tagmap_settings.h"
+
+#include <rfir/models/read_model.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace rfir::slam {
+
+double explainedShare(const std::vector<TSlamInput>& inputs, const TSlamRun& smoothed,
+                      double window, double margin, size_t& total) {
+    total = 0;
+    if (inputs.empty() || smoothed.path.size() != inputs.size()) return 0;
+    std::unordered_map<std::string, mrpt::math::TPoint2D> tags;
+    for (const auto& l : smoothed.map)
+        if (l.isTag) tags[l.id] = {l.x, l.y};
+    const double tEnd = inputs.back().t;
+    size_t explained = 0;
+    for (size_t k = inputs.size(); k-- > 0 && inputs[k].t > tEnd - window;) {
+        if (!inputs[k].rfid) continue;
+        const auto robot = smoothed.path[k].second.asTPose();
+        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
+        for (const auto& rd : inputs[k].rfid->readings)
+            for (const auto& id : rd.tags) {
+                const auto it = tags.find(id);
+                if (it == tags.end()) continue;
+                const auto& r = rd.reader;
+                const auto e = rfir::models::readModel(robot, c, s, r.x, r.y, it->second);
+                total++;
+                if (std::abs(e.x) <= r.halfX + margin && std::abs(e.y) <= r.halfY + margin)
+                    explained++;
+            }
+    }
+    return total ? double(explained) / double(total) : 0;
+}
+
+std::optional<TGraphSmootherResult> smoothedLoopClosure(
+    const std::vector<TSlamInput>& inputs, const mrpt::poses::CPose2D& start,
+    const TSlamRun& soFar, const TSlamConfig& cfg) {
+    // The question at a trigger is whether a drift explains it: estimate the
+    // drift even from the few closures before the first return.
+    auto params = smootherParams(cfg);
+    params.options.bias_min_closures = 0;
+    auto res = smoothRun(inputs, start, soFar, params);
+    // A read contradicts a tag beyond contradict_margin outside its square
+    // (as the map's own test); the share leaves room for ghost reads.
+    const double margin = std::max(0.0, cfg.tagmap->insertion.contradictMargin);
+    size_t total = 0;
+    const double share = explainedShare(inputs, res.run, cfg.kidnap.max_gap, margin, total);
+    if (total == 0 || share < 0.9) return std::nullopt;
+    return res;
+}
+
+}  // namespace rfir::slam

@@ -1,0 +1,36 @@
+/* rfir: loop closure by smoothing ([kidnap] loop_closure_smoothing; beyond the
+ * seeds; docs/slam.md, "Loop closure by smoothing"). A filter whose odometry
+ * drifts meets its first tags again metres off, and the kidnap check cannot
+ * tell that from a carried robot: both are reads that disagree with every
+ * particle. The offline smoother can: with the odometry's heading drift as a
+ * variable and no cut at the trigger, it bends a drifted path onto the old
+ * tags (the floor's third seed: 95 mm over 20 minutes, where the filter is
+ * metres off), while a carried robot's frozen odometry leaves its smoothed
+ * path metres from the reads after the put-down. */
+#pragma once
+
+#include <rfir/slam/graph_smoother.h>
+#include <rfir/slam/slam_config.h>
+#include <rfir/slam/slam_engine.h>
+
+#include <optional>
+#include <vector>
+
+namespace rfir::slam {
+
+/** Share of the RFID reads of the inputs with t > tEnd - window whose tag,
+ * at its smoothed place, lies within `margin` m of its reader's square at the
+ * smoothed pose of that input; tags absent from the map are not counted.
+ * `total` gets the number of reads counted. */
+double explainedShare(const std::vector<TSlamInput>& inputs, const TSlamRun& smoothed,
+                      double window, double margin, size_t& total);
+
+/** The run so far (one input and one filter pose each, the filter's map and
+ * earlier resets), smoothed with the drift estimated whatever the number of
+ * closures; returned if it explains at least 90 % of the last
+ * [kidnap] max_gap seconds' reads (within [tagmap] contradict_margin). */
+std::optional<TGraphSmootherResult> smoothedLoopClosure(
+    const std::vector<TSlamInput>& inputs, const mrpt::poses::CPose2D& start,
+    const TSlamRun& soFar, const TSlamConfig& cfg);
+
+}  // namespace rfir::slam

@@ -24,6 +24,12 @@ if(TARGET rfir_sim)
     LIBS rfir_slam rfir_sim rfir_eval)
 endif()
 if(TARGET rfir_sim)
+  # Loop closure by smoothing at the kidnap check's triggers (issue 12).
+  rfir_add_test(test_loop_closure
+    SOURCES test_loop_closure.cpp
+    LIBS rfir_slam rfir_sim rfir_eval)
+endif()
+if(TARGET rfir_sim)
   # Ghost reads, slips, dead readers, asynchronous polls (issue 12).
   rfir_add_test(test_slam_robust
     SOURCES test_slam_robust.cpp

@@ -110,19 +110,25 @@ def recovery(e, down, bound):
 def resets(d, m):
     return json.load(open(f"{d}/{m}/stats.json"))["kidnap_reset_times_s"]
 
-print("| method | false resets / h (normal INIs) | data (h) | INIs with a false reset |")
-print("| --- | --- | --- | --- |")
+def closures(d, m):
+    return json.load(open(f"{d}/{m}/stats.json")).get("loop_closure_times_s", [])
+
+print("| method | false resets / h (normal INIs) | data (h) | INIs with a false reset | loop closures by smoothing |")
+print("| --- | --- | --- | --- | --- |")
 for m in methods:
-    n, hours, bad = 0, 0.0, set()
+    n, hours, bad, lc = 0, 0.0, set(), []
     for ini in normal:
         for s in range(1, seeds + 1):
             d = f"{out}/{ini}/s{s}"
             r = resets(d, m)
             e = errors(d, ini, m)
             n += len(r)
+            c = closures(d, m)
+            if c: lc.append(f"{ini} seed {s} ({len(c)})")
             hours += (e[-1][0] - e[0][0]) / 3600
             if r: bad.add(f"{ini} ({len(r)})" if seeds == 1 else ini)
-    print(f"| {m} | {n / hours:.1f} ({n} resets) | {hours:.2f} | {', '.join(sorted(bad)) or '-'} |")
+    print(f"| {m} | {n / hours:.1f} ({n} resets) | {hours:.2f} | {', '.join(sorted(bad)) or '-'} | "
+          f"{', '.join(lc) or '-'} |")
 print()
 print("| method | kidnap INI | seed | false resets before | detection delay (s) | recovery (s) | recovery to the same place's error (s) | error after, mm (unkidnapped) |")
 print("| --- | --- | --- | --- | --- | --- | --- | --- |")
@@ -148,7 +154,8 @@ for ini in kidnap:
             recPlace = recovery(e, down, lambda t: 2 * place.get(round(t, 3), math.inf))
             f = lambda v: "none" if v is None else f"{v:.1f}"
             print(f"| {m} | {ini} | {s} | {sum(1 for t in r if t < T)} | "
-                  f"{f(det[0] - down if det else None)} ({len(det)} resets) | {f(rec)} | "
+                  f"{f(det[0] - down if det else None)} ({len(det)} resets"
+                  f"{f', {len(closures(d, m))} closures' if closures(d, m) else ''}) | {f(rec)} | "
                   f"{f(recPlace)} | "
                   f"{1e3 * sum(after) / len(after):.0f} ({1e3 * sum(refAfter) / len(refAfter):.0f}) |")
 PY

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace rfir::slam {
@@ -30,7 +31,8 @@ double explainedShare(const std::vector<TSlamInput>& inputs, const TSlamRun& smo
                 const auto& r = rd.reader;
                 const auto e = rfir::models::readModel(robot, c, s, r.x, r.y, it->second);
                 total++;
-                if (std::abs(e.x) <= r.halfX + margin && std::abs(e.y) <= r.halfY + margin)
+                if (std::abs(e.x) <= r.halfX + margin &&
+                    std::abs(e.y) <= r.halfY + margin)
                     explained++;
             }
     }
@@ -49,9 +51,30 @@ std::optional<TGraphSmootherResult> smoothedLoopClosure(
     // (as the map's own test); the share leaves room for ghost reads.
     const double margin = std::max(0.0, cfg.tagmap->insertion.contradictMargin);
     size_t total = 0;
-    const double share = explainedShare(inputs, res.run, cfg.kidnap.max_gap, margin, total);
+    const double share =
+        explainedShare(inputs, res.run, cfg.kidnap.max_gap, margin, total);
     if (total == 0 || share < 0.9) return std::nullopt;
     return res;
+}
+
+std::optional<TSlamRun> CRunHistory::closeLoop(double t, const mrpt::poses::CPose2D& now,
+                                               std::vector<TLandmarkOut> map,
+                                               const std::vector<double>& resetTimes,
+                                               const TSlamConfig& cfg) {
+    TSlamRun soFar;
+    soFar.path = path_;
+    soFar.path.emplace_back(t, now);
+    soFar.map = std::move(map);
+    soFar.resetTimes = resetTimes;
+    std::optional<TGraphSmootherResult> res;
+    try {
+        res = smoothedLoopClosure(inputs_, start_, soFar, cfg);
+    } catch (const std::exception&) {
+        return std::nullopt;  // the solver failed: the resetting, as without the option
+    }
+    if (!res) return std::nullopt;
+    path_.assign(res->run.path.begin(), res->run.path.end() - 1);
+    return std::move(res->run);
 }
 
 }  // namespace rfir::slam

@@ -33,4 +33,36 @@ std::optional<TGraphSmootherResult> smoothedLoopClosure(
     const std::vector<TSlamInput>& inputs, const mrpt::poses::CPose2D& start,
     const TSlamRun& soFar, const TSlamConfig& cfg);
 
+/** The run so far, kept for the smoother: every input, and the estimate of
+ * every step before the current one (the smoothed poses after a closure). */
+class CRunHistory {
+  public:
+    void reset(const mrpt::poses::CPose2D& start) {
+        start_ = start;
+        inputs_.clear();
+        path_.clear();
+        rangeBearing_ = false;
+    }
+    void addInput(const TSlamInput& in) {
+        inputs_.push_back(in);
+        rangeBearing_ = rangeBearing_ || in.rb;
+    }
+    void addPose(double t, const mrpt::poses::CPose2D& p) { path_.emplace_back(t, p); }
+    /** The smoother reads RFID only. */
+    bool rangeBearing() const { return rangeBearing_; }
+    /** smoothedLoopClosure with the current step at `now` (time t): the
+     * smoothed run if it was a loop closure (the history's poses become the
+     * smoothed ones), none if not or if the solver failed. */
+    std::optional<TSlamRun> closeLoop(double t, const mrpt::poses::CPose2D& now,
+                                      std::vector<TLandmarkOut> map,
+                                      const std::vector<double>& resetTimes,
+                                      const TSlamConfig& cfg);
+
+  private:
+    mrpt::poses::CPose2D start_;
+    std::vector<TSlamInput> inputs_;
+    std::vector<std::pair<double, mrpt::poses::CPose2D>> path_;
+    bool rangeBearing_ = false;
+};
+
 }  // namespace rfir::slam

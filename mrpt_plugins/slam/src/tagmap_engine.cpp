@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <stdexcept>
 #include <unordered_map>
 
 namespace rfir::slam {
@@ -79,11 +78,8 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
         pose_ = start;
         odo_ = start;
         runAnchors_.clear();
-        start_ = start;
-        hist_.clear();
-        histPath_.clear();
+        hist_.reset(start);
         closureTimes_.clear();
-        rbSeen_ = false;
     }
     void step(const TSlamInput& in) override;
     mrpt::poses::CPose2D pose() const override { return pose_; }
@@ -222,13 +218,10 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     CRunAnchors runAnchors_;
     double t_ = 0;                    //!< this step's time
     std::vector<double> resetTimes_;  //!< when sensor resetting fired
-    /** loop_closure_smoothing: the run so far (inputs, and the estimate of
-     * each step before this one), and when a trigger was a loop closure. */
-    mrpt::poses::CPose2D start_;
-    std::vector<TSlamInput> hist_;
-    std::vector<std::pair<double, mrpt::poses::CPose2D>> histPath_;
+    /** loop_closure_smoothing: the run so far, and when a trigger was a
+     * loop closure. */
+    CRunHistory hist_;
     std::vector<double> closureTimes_;
-    bool rbSeen_ = false;     //!< the smoother is RFID only
     bool closedNow_ = false;  //!< this step was a loop closure
 };
 
@@ -328,7 +321,8 @@ void CTagMapEngine::checkKidnap() {
         if (kidnap_.suspicious()) runAnchors_.add(knownAnchors(map_, dets_), odo_);
         return;
     }
-    if (cfg_.kidnap.loop_closure_smoothing && !rbSeen_ && closeLoop()) return;
+    if (cfg_.kidnap.loop_closure_smoothing && !hist_.rangeBearing() && closeLoop())
+        return;
     resetTimes_.push_back(t_);
     const size_t M = pf_.m_particles.size();
     const size_t n = std::max<size_t>(1, size_t(cfg_.kidnap.inject_fraction * M));
@@ -347,25 +341,15 @@ void CTagMapEngine::checkKidnap() {
 }
 
 bool CTagMapEngine::closeLoop() {
-    TSlamRun soFar;
-    soFar.path = histPath_;
-    soFar.path.emplace_back(t_, pf_.meanPose());  // this step's, before any reset
-    soFar.map = landmarks();
-    soFar.resetTimes = resetTimes_;
-    std::optional<TGraphSmootherResult> res;
-    try {
-        res = smoothedLoopClosure(hist_, start_, soFar, cfg_);
-    } catch (const std::exception&) {
-        return false;  // the solver failed: the resetting, as without the option
-    }
-    if (!res) return false;
-    for (const auto& l : res->run.map)
+    // This step's pose before any reset joins the smoothed run.
+    const auto run = hist_.closeLoop(t_, pf_.meanPose(), landmarks(), resetTimes_, cfg_);
+    if (!run) return false;
+    for (const auto& l : run->map)
         if (const auto* e = map_.getTag(l.id))
             map_.translateEntry(l.id, false, l.x - e->estimate.mean.x,
                                 l.y - e->estimate.mean.y);
-    pf_.reset(res->run.path.back().second, cfg_.slam.robot_particles,
-              cfg_.slam.start_std_xy, cfg_.slam.start_std_phi, rng_);
-    histPath_.assign(res->run.path.begin(), res->run.path.end() - 1);
+    pf_.reset(run->path.back().second, cfg_.slam.robot_particles, cfg_.slam.start_std_xy,
+              cfg_.slam.start_std_phi, rng_);
     closureTimes_.push_back(t_);
     runAnchors_.clear();
     closedNow_ = true;
@@ -394,10 +378,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
         return;
     }
     closedNow_ = false;
-    if (cfg_.kidnap.loop_closure_smoothing) {
-        hist_.push_back(in);
-        rbSeen_ = rbSeen_ || in.rb;
-    }
+    if (cfg_.kidnap.loop_closure_smoothing) hist_.addInput(in);
     literal_ = map_.updateTagsBeforeWeighing();
     // 2-4. MRPT's CParticleFilter::executeOn: propagate every particle by a
     // draw of the odometry Gaussian (engine's generator), then afterMotion()
@@ -423,7 +404,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
         insert(predictedForInsert_ ? *predictedForInsert_ : pose_);
     else if (!literal_ && cfg_.kidnap.map_new_tags_in_run)
         insertNewOnly(predictedForInsert_ ? *predictedForInsert_ : pose_);
-    if (cfg_.kidnap.loop_closure_smoothing) histPath_.emplace_back(t_, pose_);
+    if (cfg_.kidnap.loop_closure_smoothing) hist_.addPose(t_, pose_);
 }
 
 std::vector<TLandmarkOut> CTagMapEngine::landmarks() const {

@@ -10,6 +10,11 @@
 #include <unordered_map>
 
 namespace rfir::slam {
+namespace {
+/** Share of the window's reads the smoothed path must explain: the rest is
+ * room for ghost reads (set before the first measurement). */
+constexpr double kExplainedShare = 0.9;
+}  // namespace
 
 double explainedShare(const std::vector<TSlamInput>& inputs, const TSlamRun& smoothed,
                       double window, double margin, size_t& total) {
@@ -53,7 +58,7 @@ std::optional<TGraphSmootherResult> smoothedLoopClosure(
     size_t total = 0;
     const double share =
         explainedShare(inputs, res.run, cfg.kidnap.max_gap, margin, total);
-    if (total == 0 || share < 0.9) return std::nullopt;
+    if (total == 0 || share < kExplainedShare) return std::nullopt;
     return res;
 }
 

@@ -20,20 +20,6 @@ struct TScore {
     rfir::slam::TGraphSmootherResult res;
 };
 
-rfir::sim::TSimConfig simIni(const std::string& ini, double maxDuration = 0) {
-    auto c =
-        rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini);
-    if (maxDuration > 0) c.maxDuration = maxDuration;
-    return c;
-}
-
-double meanAfter(const rfir::eval::TRobotErrors& e, double t0) {
-    std::vector<double> v;
-    for (const auto& pe : e.perPose)
-        if (pe.t > t0) v.push_back(pe.dist);
-    return mean(v);
-}
-
 /** SMOOTH_OPTS="key=value,...": [smoother] edits for the measurements. */
 std::vector<std::pair<std::string, std::string>> smootherEdits() {
     std::vector<std::pair<std::string, std::string>> v;

@@ -11,20 +11,6 @@
 using namespace slam_test;
 
 namespace {
-rfir::sim::TSimConfig simIni(const std::string& ini, double maxDuration = 0) {
-    auto c =
-        rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini);
-    if (maxDuration > 0) c.maxDuration = maxDuration;
-    return c;
-}
-
-double meanAfter(const rfir::eval::TRobotErrors& e, double t0) {
-    std::vector<double> v;
-    for (const auto& pe : e.perPose)
-        if (pe.t >= t0) v.push_back(pe.dist);
-    return mean(v);
-}
-
 const std::vector<std::pair<std::string, std::string>> kOff = {
     {"kidnap.loop_closure_smoothing", "false"}};
 }  // namespace

@@ -122,4 +122,20 @@ inline double stddev(const std::vector<double>& v) {
     return v.size() < 2 ? 0 : std::sqrt(s / double(v.size() - 1));
 }
 
+/** A stock simulator INI (config_ini/<ini>), cut at maxDuration s if > 0. */
+inline rfir::sim::TSimConfig simIni(const std::string& ini, double maxDuration = 0) {
+    auto c =
+        rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini);
+    if (maxDuration > 0) c.maxDuration = maxDuration;
+    return c;
+}
+
+/** The mean robot error over the poses after t0 (s). */
+inline double meanAfter(const rfir::eval::TRobotErrors& e, double t0) {
+    std::vector<double> v;
+    for (const auto& pe : e.perPose)
+        if (pe.t > t0) v.push_back(pe.dist);
+    return mean(v);
+}
+
 }  // namespace slam_test

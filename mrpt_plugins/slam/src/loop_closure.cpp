@@ -2,9 +2,8 @@
 
 #include "tagmap_settings.h"
 
-#include <rfir/models/read_model.h>
+#include <rfir/models/detection_likelihood.h>
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -14,10 +13,15 @@ namespace {
 /** Share of the window's reads the smoothed path must explain: the rest is
  * room for ghost reads (set before the first measurement). */
 constexpr double kExplainedShare = 0.9;
-}  // namespace
 
+/** Share of the RFID reads of the inputs with t > tEnd - window that the
+ * smoothed run does not contradict (the map's own test, `det.contradicts`
+ * with [tagmap] contradict_margin: a tag at its smoothed place, the reader at
+ * the smoothed pose); tags absent from the map are not counted. `total` gets
+ * the number of reads counted. */
 double explainedShare(const std::vector<TSlamInput>& inputs, const TSlamRun& smoothed,
-                      double window, double margin, size_t& total) {
+                      double window, const rfir::models::DetectionLikelihood& det,
+                      double margin, size_t& total) {
     total = 0;
     if (inputs.empty() || smoothed.path.size() != inputs.size()) return 0;
     std::unordered_map<std::string, mrpt::math::TPoint2D> tags;
@@ -28,21 +32,20 @@ double explainedShare(const std::vector<TSlamInput>& inputs, const TSlamRun& smo
     for (size_t k = inputs.size(); k-- > 0 && inputs[k].t > tEnd - window;) {
         if (!inputs[k].rfid) continue;
         const auto robot = smoothed.path[k].second.asTPose();
-        const double c = std::cos(robot.phi), s = std::sin(robot.phi);
-        for (const auto& rd : inputs[k].rfid->readings)
+        for (const auto& rd : inputs[k].rfid->readings) {
+            const auto& r = rd.reader;
+            const rfir::models::ReaderArea area{r.x, r.y, r.halfX, r.halfY};
             for (const auto& id : rd.tags) {
                 const auto it = tags.find(id);
                 if (it == tags.end()) continue;
-                const auto& r = rd.reader;
-                const auto e = rfir::models::readModel(robot, c, s, r.x, r.y, it->second);
                 total++;
-                if (std::abs(e.x) <= r.halfX + margin &&
-                    std::abs(e.y) <= r.halfY + margin)
-                    explained++;
+                explained += !det.contradicts(robot, area, it->second, margin);
             }
+        }
     }
     return total ? double(explained) / double(total) : 0;
 }
+}  // namespace
 
 std::optional<TGraphSmootherResult> smoothedLoopClosure(
     const std::vector<TSlamInput>& inputs, const mrpt::poses::CPose2D& start,
@@ -52,12 +55,10 @@ std::optional<TGraphSmootherResult> smoothedLoopClosure(
     auto params = smootherParams(cfg);
     params.options.bias_min_closures = 0;
     auto res = smoothRun(inputs, start, soFar, params);
-    // A read contradicts a tag beyond contradict_margin outside its square
-    // (as the map's own test); the share leaves room for ghost reads.
-    const double margin = std::max(0.0, cfg.tagmap->insertion.contradictMargin);
+    const rfir::models::DetectionLikelihood det(cfg.tagmap->likelihood.detection);
     size_t total = 0;
-    const double share =
-        explainedShare(inputs, res.run, cfg.kidnap.max_gap, margin, total);
+    const double share = explainedShare(inputs, res.run, cfg.kidnap.max_gap, det,
+                                        cfg.tagmap->insertion.contradictMargin, total);
     if (total == 0 || share < kExplainedShare) return std::nullopt;
     return res;
 }
@@ -74,7 +75,7 @@ std::optional<TSlamRun> CRunHistory::closeLoop(double t, const mrpt::poses::CPos
     std::optional<TGraphSmootherResult> res;
     try {
         res = smoothedLoopClosure(inputs_, start_, soFar, cfg);
-    } catch (const std::exception&) {
+    } catch (const std::runtime_error&) {
         return std::nullopt;  // the solver failed: the resetting, as without the option
     }
     if (!res) return std::nullopt;

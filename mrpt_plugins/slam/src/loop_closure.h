@@ -18,17 +18,11 @@
 
 namespace rfir::slam {
 
-/** Share of the RFID reads of the inputs with t > tEnd - window whose tag,
- * at its smoothed place, lies within `margin` m of its reader's square at the
- * smoothed pose of that input; tags absent from the map are not counted.
- * `total` gets the number of reads counted. */
-double explainedShare(const std::vector<TSlamInput>& inputs, const TSlamRun& smoothed,
-                      double window, double margin, size_t& total);
-
 /** The run so far (one input and one filter pose each, the filter's map and
  * earlier resets), smoothed with the drift estimated whatever the number of
  * closures; returned if it explains at least 90 % of the last
- * [kidnap] max_gap seconds' reads (within [tagmap] contradict_margin). */
+ * [kidnap] max_gap seconds' reads (none contradicted by the map's own test,
+ * [tagmap] contradict_margin included). */
 std::optional<TGraphSmootherResult> smoothedLoopClosure(
     const std::vector<TSlamInput>& inputs, const mrpt::poses::CPose2D& start,
     const TSlamRun& soFar, const TSlamConfig& cfg);

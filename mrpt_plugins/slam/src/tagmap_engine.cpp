@@ -222,7 +222,7 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
      * loop closure. */
     CRunHistory hist_;
     std::vector<double> closureTimes_;
-    bool closedNow_ = false;  //!< this step was a loop closure
+    bool relocatedNow_ = false;  //!< this step reset or closed a loop
 };
 
 void CTagMapEngine::afterMotion() {
@@ -321,6 +321,7 @@ void CTagMapEngine::checkKidnap() {
         if (kidnap_.suspicious()) runAnchors_.add(knownAnchors(map_, dets_), odo_);
         return;
     }
+    relocatedNow_ = true;
     if (cfg_.kidnap.loop_closure_smoothing && !hist_.rangeBearing() && closeLoop())
         return;
     resetTimes_.push_back(t_);
@@ -352,7 +353,6 @@ bool CTagMapEngine::closeLoop() {
               cfg_.slam.start_std_phi, rng_);
     closureTimes_.push_back(t_);
     runAnchors_.clear();
-    closedNow_ = true;
     return true;
 }
 
@@ -377,7 +377,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
         insert(pose_);
         return;
     }
-    closedNow_ = false;
+    relocatedNow_ = false;
     if (cfg_.kidnap.loop_closure_smoothing) hist_.addInput(in);
     literal_ = map_.updateTagsBeforeWeighing();
     // 2-4. MRPT's CParticleFilter::executeOn: propagate every particle by a
@@ -395,8 +395,7 @@ void CTagMapEngine::step(const TSlamInput& in) {
     rfir::models::resampleIfNeeded(pf_, cfg_.slam.pfOptions(), rng_);
     // 7. PF/PS with map_correction: the tags mapped from an uncertain robot
     // follow the weighing's correction of it;
-    if (cfg_.slam.map_correction)
-        correctMap((!resetTimes_.empty() && resetTimes_.back() == t_) || closedNow_);
+    if (cfg_.slam.map_correction) correctMap(relocatedNow_);
     reads_.clear();
     // 8. the estimate, and the tag update of the revisit policies.
     pose_ = pf_.meanPose();

@@ -354,20 +354,20 @@ int runSlamApp(const TAppArgs& args) {
     auto engine = rfir::slam::makeEngine(cfg, data.header);
     const size_t n = data.inputs.size();
     rfir::common::CProgress progress("rfir-slam", n, a.quiet ? nullptr : &std::cerr);
-    // Each sensor resetting gets a line when it happens (not only a count).
-    size_t reported = 0, closures = 0;
+    // Each sensor resetting and loop closure gets a line when it happens
+    // (not only a count).
+    size_t resets = 0, closures = 0;
+    const auto report = [&](const std::vector<double>& times, size_t& done,
+                            const char* what) {
+        for (; done < times.size(); done++)
+            logStream(a) << "rfir-slam: " << what << " at t = " << std::fixed
+                         << std::setprecision(2) << times[done] << " s\n"
+                         << std::defaultfloat;
+    };
     const auto run = rfir::slam::runEngine(*engine, start, data.inputs, [&](size_t i) {
         progress.update(i);
-        const auto& rt = engine->resetTimes();
-        for (; reported < rt.size(); reported++)
-            logStream(a) << "rfir-slam: kidnap detected, sensor resetting at t = "
-                         << std::fixed << std::setprecision(2) << rt[reported] << " s\n"
-                         << std::defaultfloat;
-        const auto& lc = engine->loopClosureTimes();
-        for (; closures < lc.size(); closures++)
-            logStream(a) << "rfir-slam: loop closure by smoothing at t = " << std::fixed
-                         << std::setprecision(2) << lc[closures] << " s\n"
-                         << std::defaultfloat;
+        report(engine->resetTimes(), resets, "kidnap detected, sensor resetting");
+        report(engine->loopClosureTimes(), closures, "loop closure by smoothing");
     });
     progress.finish();
 

@@ -40,6 +40,13 @@ ap.add_argument("--ghost", type=float, default=0.0,
 ap.add_argument("--t0", type=float, default=0.0, help="first timestamp, s")
 ap.add_argument("--kidnap", type=float, default=-1,
                 help="at this time the robot is carried 2 s (no records) to a random spot")
+ap.add_argument("--kidnap-turn", type=float, default=0.0,
+                help="with --kidnap: the robot is also turned by up to this many rad")
+ap.add_argument("--kidnap-dist", type=float, default=0.0,
+                help="with --kidnap: put down this far (m) from where it was picked up "
+                     "(0: anywhere on the floor)")
+ap.add_argument("--miss", type=float, default=0.0,
+                help="per read: the probability that a tag in a reader's square is not read")
 ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--start", default="0.5,0.5,0", help="start pose x,y,phi (the log's start record)")
 a = ap.parse_args()
@@ -156,7 +163,8 @@ def reads(px, py, pth, r, T=0.0):
                 dx, dy = tg[1] - rx, tg[2] - ry
                 ex, ey = c * dx + s * dy, -s * dx + c * dy
                 if abs(ex) < r[3] and abs(ey) < r[4]:
-                    out.append(tg[0])
+                    if not (a.miss and rng.random() < a.miss):
+                        out.append(tg[0])
     if g and g not in out:
         out.append(g)
     return out
@@ -221,7 +229,17 @@ while t <= a.duration + 1e-9:
         t += 2.0
         while a.rr_hz and next_poll < t:  # no polls while carried
             next_poll += 1.0 / (a.rr_hz * len(readers))
-        x, y, th = rng.uniform(0.5, W - 0.5), rng.uniform(0.5, H - 0.5), th
+        if a.kidnap_dist > 0:
+            for _ in range(100):  # a direction that stays on the floor
+                b = rng.uniform(-math.pi, math.pi)
+                nx, ny = x + a.kidnap_dist * math.cos(b), y + a.kidnap_dist * math.sin(b)
+                if 0.5 <= nx <= W - 0.5 and 0.5 <= ny <= H - 0.5:
+                    break
+            x, y = nx, ny
+        else:
+            x, y = rng.uniform(0.5, W - 0.5), rng.uniform(0.5, H - 0.5)
+        if a.kidnap_turn > 0:
+            th = wrap(th + rng.uniform(-a.kidnap_turn, a.kidnap_turn))
         goal = next(wp)
 
 if polls:  # the odometry lines (stamped + lag) and the polls in time order

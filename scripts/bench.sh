@@ -7,10 +7,11 @@
 # case and round, and needs about 8 GB of free memory (PS-SLAM's 1M-tag state;
 # FastSLAM's 5.8 GB at N = 100,000 is freed before).
 #
-#   bash scripts/bench.sh                 # full run, updates docs/
+#   bash scripts/bench.sh                 # full run (rfir-bench --full), updates docs/
 #   bash scripts/bench.sh --quick         # smoke run (seconds), docs untouched
 #   bash scripts/bench.sh --out-dir /tmp/b  # full run, results in /tmp/b only
-# Other options are passed to rfir-bench (see rfir-bench --help).
+# Other options are passed to rfir-bench (see rfir-bench --help); without
+# --quick the script passes --full.
 # Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs),
 # RFIR_BENCH_NO_BUILD=1 (use the rfir-bench already built).
 set -euo pipefail
@@ -25,9 +26,11 @@ while (($#)); do
   case "$1" in
     --out-dir|--out) out="$2"; shift 2 ;;
     --quick) quick=1; args+=(--quick); shift ;;
+    --full) shift ;;
     *) args+=("$1"); shift ;;
   esac
 done
+[ $quick -eq 1 ] || args+=(--full)
 
 if [ "${RFIR_BENCH_NO_BUILD:-0}" != 1 ]; then
   if [ ! -f "$BUILD/CMakeCache.txt" ]; then

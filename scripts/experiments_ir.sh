@@ -40,10 +40,10 @@ cli="$WORK/cli"
 mkdir -p "$cli"
 "$BUILD/bin/rfir-ids" plan --room "0 0 3.2 2.4" --pitch 0.8 --height 1.5 --output "$cli/planned_emitters.txt"
 "$BUILD/bin/rfir-sim" --config config_ini/sim_ir_loop.ini --out-dir "$cli" --name loop --seed 1 -q
-"$BUILD/bin/rfir-localize" --config config_ini/ir_localize.ini --rawlog "$cli/loop.rawlog" \
-  --emitters "$cli/loop.gt_map.txt" --out-dir "$cli/mcl" --seed 1 -q
-"$BUILD/bin/rfir-localize" --config config_ini/ir_localize.ini --rawlog "$cli/loop.rawlog" \
-  --emitters "$cli/loop.gt_map.txt" --out-dir "$cli/odometry" --odometry-only -q
 echo "[experiments_ir] command-line run (seed 1, lattice room):"
-cat "$cli/mcl/errors.txt" "$cli/odometry/errors.txt"
+# Each prints its error table on stdout (also in OUT/errors.json).
+"$BUILD/bin/rfir-localize" --config config_ini/ir_localize.ini --rawlog "$cli/loop.rawlog" \
+  --emitters "$cli/loop.gt_map.txt" --out-dir "$cli/mcl" --seed 1
+"$BUILD/bin/rfir-localize" --config config_ini/ir_localize.ini --rawlog "$cli/loop.rawlog" \
+  --emitters "$cli/loop.gt_map.txt" --out-dir "$cli/odometry" --odometry-only
 echo "[experiments_ir] results: $out/results_ir.md"

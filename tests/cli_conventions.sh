@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Every program in BIN (every rfir-* there, found at run time: a new program
 # without an entry below fails) is run, each time in a fresh empty working
-# directory, with --help, --version, an unknown option, malformed numbers and
-# a missing required option. Checks the exit codes (0, 0, then non-zero), that
-# a bad number is reported naming its option, and that nothing was written:
-# the directory stays empty and no file under SRC/docs changes. Then bad
-# --set edits in every program that takes --set (the same checks, and the
-# message names the section or key), -q on short real runs (nothing on
+# directory, with --help, --version, no argument, an unknown option, malformed
+# numbers and a missing required option. Checks the exit codes (0, 0, then 2:
+# every command-line error), that a bad number is reported naming its option,
+# and that nothing was written: the directory stays empty and no file under
+# SRC/docs changes. Then the other command-line errors (an unknown value, an
+# unknown stock INI, an unknown subcommand, ...: exit 2 naming the option; an
+# INI file's own bad value: exit 1 naming the file), bad --set edits in every
+# program that takes --set (exit 2, the message names the edit), the output
+# names rfir-slam and rfir-localize share, -q on short real runs (nothing on
 # stdout, nothing but warnings on stderr), and --set / --seed of the
 # experiment programs on tiny real runs.
 #   bash tests/cli_conventions.sh BIN SRC [basic|options|all]
@@ -82,8 +85,9 @@ MISSING[rfir-bench]=-
 docs_hash() { (cd "$SRC" && find docs -type f -print0 | sort -z | xargs -0 sha256sum); }
 before=$(docs_hash)
 
-# run NAME EXPECT ARGS...: EXPECT is 0 or "nonzero"; the run is in a fresh
-# empty directory; prints the failure and returns 1 on a mismatch.
+# run NAME EXPECT ARGS...: EXPECT is an exit code (0, 1; 2 is every
+# command-line error); the run is in a fresh empty directory; prints the
+# failure on a mismatch.
 last_err=""
 run() {
   local prog=$1 expect=$2
@@ -95,10 +99,8 @@ run() {
   code=$?
   last_err=$(cat "$root/stderr")
   local what="$prog $*"
-  if [ "$expect" = 0 ] && [ $code -ne 0 ]; then
-    fail "$what: exit $code, expected 0: $(head -c 400 "$root/stderr")"
-  elif [ "$expect" != 0 ] && { [ $code -eq 0 ] || [ $code -ge 124 ]; }; then
-    fail "$what: exit $code, expected an error exit (1 or 2)"
+  if [ $code -ne "$expect" ]; then
+    fail "$what: exit $code, expected $expect: $(head -c 400 "$root/stderr")"
   fi
   if [ -n "$(ls -A "$wd")" ]; then
     fail "$what: wrote into the working directory: $(ls -A "$wd" | head -5 | tr '\n' ' ')"
@@ -124,11 +126,15 @@ basic_checks() {
     run "$prog" 0 --help
     grep -q -i "usage" "$root/stdout" || fail "$prog --help: no usage on stdout"
     run "$prog" 0 --version
-    run "$prog" nonzero "${base[@]}" --no-such-option
-    run "$prog" nonzero "${base[@]}" -Z
+    run "$prog" 2
+    grep -q "^usage:" <<<"$last_err" || fail "$prog without arguments: no usage on stderr"
+    run "$prog" 2 "${base[@]}" --no-such-option
+    grep -q -- "--no-such-option" <<<"$last_err" ||
+      fail "$prog --no-such-option: the message does not name it: $last_err"
+    run "$prog" 2 "${base[@]}" -Z
     if [ "${INT[$prog]}" != - ]; then
       for v in "${ints[@]}"; do
-        run "$prog" nonzero "${base[@]}" "${INT[$prog]}" "$v"
+        run "$prog" 2 "${base[@]}" "${INT[$prog]}" "$v"
         grep -q -- "${INT[$prog]}" <<<"$last_err" ||
           fail "$prog ${INT[$prog]} '$v': the message does not name the option: $last_err"
       done
@@ -137,17 +143,72 @@ basic_checks() {
       for v in "${reals[@]}"; do
         val=$v
         [ "${REAL[$prog]}" = --start ] && val="0 0 $v"
-        run "$prog" nonzero "${base[@]}" "${REAL[$prog]}" "$val"
+        run "$prog" 2 "${base[@]}" "${REAL[$prog]}" "$val"
         grep -q -- "${REAL[$prog]}" <<<"$last_err" ||
           fail "$prog ${REAL[$prog]} '$val': the message does not name the option: $last_err"
       done
     fi
     if [ "${MISSING[$prog]}" != - ]; then
       read -r -a missing <<<"${MISSING[$prog]}"
-      run "$prog" nonzero "${missing[@]}"
+      run "$prog" 2 "${missing[@]}"
     fi
   done
   [ $n -ge 9 ] || fail "found only $n programs in $BIN"
+  value_checks
+}
+
+# value_checks: command-line errors past the option names, each PROGRAM ARGS
+# with a text the message must hold: exit 2, nothing written. Then the same
+# key made bad in an INI file: exit 1, naming the file.
+value_checks() {
+  local R=$DS/rfid_60mm_16tags_loop.rawlog IR=$DS/ir_loop_spots.rawlog
+  local GT=$DS/rfid_kidnap.gt.tum
+  local cases=(
+    "--method|rfir-slam --rawlog $R --out-dir out --method foo"
+    "--config: 'nosuch'|rfir-slam --rawlog $R --out-dir out --config nosuch"
+    "--set slam.robot_particles=abc: [slam] robot_particles|rfir-slam --rawlog $R --out-dir out --set slam.robot_particles=abc"
+    "--set slam.no_such_key=1|rfir-slam --rawlog $R --out-dir out --config slam_ps --set slam.no_such_key=1"
+    "--config: 'nosuch'|rfir-localize --rawlog $IR --out-dir out --config nosuch"
+    "--set localization.num_particles=abc|rfir-localize --rawlog $IR --out-dir out --set localization.num_particles=abc"
+    "--config: 'nosuch'|rfir-sim --config nosuch --out-dir out"
+    "--name|rfir-sim --config sim_kidnap --out-dir out --name a/b"
+    "--bogus|rfir-ids --bogus"
+    "unknown command 'bogus'|rfir-ids bogus"
+    "--codes|rfir-ids encode --codes 9,3"
+    "--room|rfir-ids plan --room 0,0,1"
+    "--full|rfir-bench --out-dir out"
+    "--quick and --full|rfir-bench --quick --full --out-dir out"
+    "--methods|rfir-bench --quick --methods foo --out-dir out"
+    "--config-dir|rfir-bench --quick --config-dir nosuch --out-dir out"
+    "--kind|rfir-eval --path $GT --gt-path $GT --kind foo"
+    "--gt-path|rfir-eval --path $GT"
+    "--run|rfir-eval --run foo --gt-path $GT"
+    "--rows|rfir-experiments --quick --rows nosuch --out-dir out"
+    "--config-dir|rfir-experiments --quick --rows t31_16 --out-dir out --config-dir nosuch"
+    "--only|rfir-ir-experiments --quick --only nosuch --out-dir out"
+    "--motion|rfir-plain-ps --input $SRC/tests/data/textlog/rfid_short.txt --motion 1,2,3"
+    "--lossy|rfir-import --input $SRC/tests/data/textlog/full.txt --output out.rawlog --lossy"
+  )
+  local item said args
+  for item in "${cases[@]}"; do
+    said=${item%%|*}
+    read -r -a args <<<"${item#*|}"
+    for i in "${!args[@]}"; do [ "${args[$i]}" = 0,0,1 ] && args[$i]="0 0 1"; done
+    run "${args[@]:0:1}" 2 "${args[@]:1}"
+    grep -qF -- "$said" <<<"$last_err" ||
+      fail "${args[*]}: the message does not say '$said': $last_err"
+    grep -q "config_ini/" <<<"$last_err" &&
+      fail "${args[*]}: the message names a stock INI: $last_err"
+  done
+  # A bad value in an INI file is the file's error (exit 1), named by it,
+  # also beside a good --set edit.
+  sed 's/^robot_particles.*/robot_particles = abc/' "$CFG/slam_pf.ini" >"$root/bad_pf.ini"
+  for extra in "" "--set slam.resample_ess=0.5"; do
+    # shellcheck disable=SC2086
+    run rfir-slam 1 --rawlog "$R" --out-dir out --config "$root/bad_pf.ini" $extra
+    grep -qF "$root/bad_pf.ini: [slam] robot_particles" <<<"$last_err" ||
+      fail "rfir-slam --config bad_pf.ini $extra: the message does not name the file: $last_err"
+  done
 }
 
 # quiet_run PROGRAM ARGS...: a short real run in a fresh directory: exit 0,
@@ -186,8 +247,8 @@ numbers() {
 ir_md() { sed '/^Run time:/d' "$root/$1/results_ir.md" 2>/dev/null; }
 
 # --set: a malformed edit, an unknown section, an unknown key and a bad value
-# (each EDIT@WORD: the message must name WORD) exit non-zero before any work,
-# writing nothing, in every program that takes --set.
+# (each EDIT@WORD: the message must name WORD and the edit) exit 2 before any
+# work, writing nothing, in every program that takes --set.
 bad_set_checks() {
   declare -A SETS
   SETS[rfir-slam]="slam_particles=5@slam_particles nosuch.k=1@nosuch
@@ -209,9 +270,11 @@ bad_set_checks() {
     read -r -a base <<<"${BASE[$prog]}"
     for item in ${SETS[$prog]}; do
       edit=${item%@*} word=${item##*@}
-      run "$prog" nonzero "${base[@]}" --set "$edit"
+      run "$prog" 2 "${base[@]}" --set "$edit"
       grep -q -- "$word" <<<"$last_err" ||
         fail "$prog --set '$edit': the message does not name '$word': $last_err"
+      grep -qF -- "--set $edit" <<<"$last_err" ||
+        fail "$prog --set '$edit': the message does not name the edit: $last_err"
     done
   done
 }
@@ -278,7 +341,32 @@ experiment_checks() {
     fail "rfir-ir-experiments --set: not in the header"
 }
 
+# rfir-slam and rfir-localize: the same option and output names where they do
+# the same thing: --gt-path (default: <stem>.gt.tum beside the rawlog),
+# errors.json, path_map.png, error_time.png. rfir-localize scores against a
+# --gt-path that is not beside the rawlog.
+shared_name_checks() {
+  local prog
+  for prog in rfir-slam rfir-localize; do
+    grep -q -- "--gt-path" <<<"$("$BIN/$prog" --help)" || fail "$prog --help: no --gt-path"
+  done
+  mkdir -p "$root/alone"
+  cp "$DS/ir_raw_15s.rawlog" "$root/alone/"
+  (cd "$root" && "$BIN/rfir-slam" -q --rawlog "$DS/rfid_60mm_16tags_loop.rawlog" \
+    --out-dir slam --method odometry &&
+    "$BIN/rfir-localize" -q --rawlog alone/ir_raw_15s.rawlog --out-dir loc \
+      --emitters "$DS/ir_raw_15s.gt_map.txt" --gt-path "$DS/ir_raw_15s.gt.tum" \
+      --set localization.num_particles=200) >/dev/null 2>"$root/stderr" ||
+    fail "slam / localize runs: $(head -c 300 "$root/stderr")"
+  local f
+  for f in errors.json path_map.png error_time.png path.tum stats.json settings.ini; do
+    [ -s "$root/slam/$f" ] || fail "rfir-slam: no $f"
+    [ -s "$root/loc/$f" ] || fail "rfir-localize: no $f"
+  done
+}
+
 option_checks() {
+  shared_name_checks
   bad_set_checks
   quiet_checks
   experiment_checks

@@ -14,6 +14,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 const std::string kBench = std::string(RFIR_BINARY_DIR) + "/bin/rfir-bench";
@@ -146,16 +148,17 @@ TEST(BenchSmoke, TinyRunReportsEveryCase) {
 TEST(BenchSmoke, BadOptionsAreRejected) {
     const rfir_test::TmpDir tmp;
     const std::string dir = tmp.p.string();
-    TRun r = run("--n 5", dir);
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.err.find("--n"), std::string::npos) << r.err;
-    r = run("--methods ps,ekf", dir);
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.err.find("'ekf'"), std::string::npos) << r.err;
-    r = run("--m 10,x", dir);
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.err.find("'x'"), std::string::npos) << r.err;
-    r = run("--plots /nonexistent_dir_for_rfir_bench", dir);
-    EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.err.find("nonexistent_dir_for_rfir_bench"), std::string::npos) << r.err;
+    // Each a command-line error: exit 2 naming the option, before any work.
+    for (const auto& [args, said] : std::vector<std::pair<std::string, std::string>>{
+             {"--quick --n 5", "--n"},
+             {"--quick --methods ps,ekf", "'ekf'"},
+             {"--quick --m 10,x", "'x'"},
+             {"--quick --plots /nonexistent_dir_for_rfir_bench",
+              "nonexistent_dir_for_rfir_bench"},
+             {"--m 100", "--full"},  // neither --quick nor --full
+             {"", "usage:"}}) {
+        const TRun r = run(args, dir);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find(said), std::string::npos) << args << ": " << r.err;
+    }
 }

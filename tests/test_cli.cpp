@@ -1,9 +1,11 @@
 /* The command-line helpers every program uses: strict numbers, lists, the
- * parse outcome (help / version / error), --start folding, stock INIs by name,
- * --set edits split between the kinds of INI a program reads. */
+ * parse outcome (help / version / error / no argument), --start folding, stock
+ * INIs by name, subcommands, --set edits split between the kinds of INI a
+ * program reads and blamed when an INI refuses them. */
 #include <rfir/common/cli.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/common/install_paths.h>
+#include <rfir/models/ini_reader.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -127,7 +129,113 @@ TEST(Cli, StartFoldsThreeTokensOrKeepsOneQuoted) {
     foldOptionValues(b, "--start", 3);
     EXPECT_EQ(b, (std::vector<std::string>{"p", "--start", "1 -2 0.5", "--seed", "3"}));
     std::vector<std::string> c = {"p", "--start", "1", "2"};
-    EXPECT_THROW(foldOptionValues(c, "--start", 3), std::invalid_argument);
+    EXPECT_THROW(foldOptionValues(c, "--start", 3), CUsageError);
+}
+
+namespace {
+/** parseCommandLine on `cmd`; the exit code (-1: run) and what went to stderr. */
+std::pair<int, std::string> outcome(TCLAP::CmdLine& cmd, std::vector<std::string> args) {
+    args.insert(args.begin(), "prog");
+    testing::internal::CaptureStderr();
+    testing::internal::CaptureStdout();
+    const auto code = parseCommandLine(cmd, args);
+    const std::string err = testing::internal::GetCapturedStderr();
+    testing::internal::GetCapturedStdout();
+    return {code.value_or(-1), err};
+}
+}  // namespace
+
+TEST(Cli, NoArgumentPrintsTheUsage) {
+    // Also for a program whose every option is optional (rfir-bench).
+    TCLAP::CmdLine cmd("test", ' ', RFIR_VERSION);
+    TCLAP::SwitchArg quick("", "quick", "quick", cmd);
+    const auto [code, err] = outcome(cmd, {});
+    EXPECT_EQ(code, kUsageExitCode);
+    EXPECT_NE(err.find("usage:"), std::string::npos) << err;
+    EXPECT_NE(err.find("[--quick]"), std::string::npos) << err;
+    EXPECT_NE(err.find("prog --help"), std::string::npos) << err;
+}
+
+TEST(Cli, ListsConfigsAndSubcommandsAreCheckedWhileParsing) {
+    {
+        TCLAP::CmdLine cmd("test", ' ', RFIR_VERSION);
+        CNumberListArg<double> start("", "start", "pose", false, "X Y PHI", cmd, ' ', 3);
+        CConfigArg config("", "config", "INI", false, cmd, "slam_");
+        EXPECT_EQ(outcome(cmd, {"--start", "1 -2 0.5", "--config", "slam_ps"}).first, -1);
+        EXPECT_EQ(start.values(), (std::vector<double>{1, -2, 0.5}));
+        EXPECT_EQ(std::filesystem::path(config.getValue()),
+                  std::filesystem::path(stockConfigDir()) / "slam_ps.ini");
+    }
+    const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+        {{"--start", "1 2"}, "--start: expected 3 number(s)"},
+        {{"--start", "1 2 nan"}, "--start: 'nan' is not a finite number"},
+        {{"--config", "no_such"}, "--config: 'no_such' is no INI file and no stock INI"},
+        {{"--config", "no_such"}, "slam_ps"},  // the stock INIs of that prefix
+        {{"--config", "./slam_ps.ini"}, "--config"}};
+    for (const auto& [args, said] : bad) {
+        TCLAP::CmdLine cmd("test", ' ', RFIR_VERSION);
+        CNumberListArg<double> start("", "start", "pose", false, "X Y PHI", cmd, ' ', 3);
+        CConfigArg config("", "config", "INI", false, cmd, "slam_");
+        const auto [code, err] = outcome(cmd, args);
+        EXPECT_EQ(code, kUsageExitCode) << args[1];
+        EXPECT_NE(err.find(said), std::string::npos) << err;
+    }
+    for (const auto& [args, said] :
+         std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"plan"}, ""},
+             {{"bogus"}, "unknown command 'bogus' (encode, plan)"},
+             {{"--bogus"}, "--bogus: Couldn't find match"},
+             {{"plan", "--bogus"}, "--bogus"}}) {
+        TCLAP::CmdLine cmd("test", ' ', RFIR_VERSION);
+        CSubcommandArg command("command", {"encode", "plan"}, cmd);
+        const auto [code, err] = outcome(cmd, args);
+        EXPECT_EQ(code, said.empty() ? -1 : kUsageExitCode) << args[0];
+        EXPECT_NE(err.find(said), std::string::npos) << err;
+        if (said.empty()) EXPECT_EQ(command.getValue(), "plan");
+    }
+}
+
+namespace {
+/** A loader of one section [s] with an integer key k in [0, 9], as the
+ * programs' loaders check theirs. */
+void loadTestIni(const std::string& text, const std::vector<std::string>& edits) {
+    rfir::ini::CIniFile f("/some/dir/test.ini", text);
+    applyIniOverrides(f, edits);
+    rfir::ini::checkSections(f, {"s"});
+    rfir::ini::CIniSection(f, "s", {"k"}).getInt("k", 1, 0, 9);
+}
+
+std::string blame(const std::string& text, const std::vector<std::string>& edits) {
+    try {
+        loadWithIniEdits(
+            edits, [&](const std::vector<std::string>& e) { loadTestIni(text, e); });
+    } catch (const CUsageError& e) {
+        return std::string("usage: ") + e.what();
+    } catch (const std::exception& e) {
+        return std::string("file: ") + e.what();
+    }
+    return "loaded";
+}
+}  // namespace
+
+TEST(Cli, IniEditsTheIniRefusesAreTheCommandLines) {
+    EXPECT_EQ(blame("[s]\nk = 3\n", {"s.k=4"}), "loaded");
+    // A value from the command line: named as the edit, not as the file's.
+    EXPECT_EQ(blame("[s]\nk = 3\n", {"s.k=4", "s.k=abc", "s.k=99"}),
+              "usage: --set s.k=abc: [s] k: expected an integer, got 'abc'");
+    EXPECT_EQ(blame("[s]\nk = 3\n", {"t.k=1"}).rfind("usage: --set t.k=1: [t]: ", 0), 0u);
+    EXPECT_EQ(blame("[s]\nk = 3\n", {"s.j=1"}).rfind("usage: --set s.j=1: [s] j: ", 0),
+              0u);
+    EXPECT_EQ(blame("[s]\nk = 3\n", {"sk=1"}),
+              "usage: --set sk=1: expected section.key=value");
+    // The file's own error stays the file's, edits or not (an edit of the
+    // bad key itself replaces the file's value).
+    for (const auto& edits :
+         std::vector<std::vector<std::string>>{{}, {"s.k=4"}, {"s.k=abc"}})
+        EXPECT_EQ(blame("[s]\nk = 3\nj = 1\n", edits)
+                      .rfind("file: /some/dir/test.ini: [s] j: unknown key", 0),
+                  0u);
+    EXPECT_EQ(blame("[s]\nk = x\n", {"s.k=4"}), "loaded");
 }
 
 TEST(Cli, StockIniByBareName) {
@@ -147,7 +255,7 @@ TEST(Cli, IniEditsAreSplitOnce) {
     EXPECT_EQ(e.key, "key");
     EXPECT_EQ(e.value, "a=b");
     for (const char* bad : {"slam_particles=5", ".k=1", "slam.=1", "slam.k", ""})
-        EXPECT_THROW(parseIniEdit(bad), std::invalid_argument) << bad;
+        EXPECT_THROW(parseIniEdit(bad), CUsageError) << bad;
     mrpt::config::CConfigFileMemory ini;
     applyIniOverrides(ini, {"slam.robot_particles=50", "slam.robot_particles=60"});
     EXPECT_EQ(ini.read_int("slam", "robot_particles", 0), 60);  // the last one wins
@@ -168,7 +276,7 @@ TEST(Cli, IniEditsAreRoutedBySection) {
     auto message = [&](const std::string& edit) {
         try {
             routeIniEdits(kinds, {"slam.robot_particles=1", edit});
-        } catch (const std::invalid_argument& e) {
+        } catch (const CUsageError& e) {
             return std::string(e.what());
         }
         return std::string("no error");
@@ -183,7 +291,8 @@ TEST(Cli, IniEditsAreRoutedBySection) {
               std::string::npos);
     EXPECT_NE(message("ir:trajectory.speed=1").find("no INI kind 'ir:'"),
               std::string::npos);
-    EXPECT_NE(message("slam_particles=5").find("'slam_particles=5'"), std::string::npos);
+    EXPECT_NE(message("slam_particles=5").find("--set slam_particles=5:"),
+              std::string::npos);
     EXPECT_NE(message("slam_particles=5").find("expected section.key=value"),
               std::string::npos);
 }

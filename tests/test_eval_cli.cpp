@@ -113,7 +113,7 @@ TEST_F(EvalCli, SegmentsPerTimeWindow) {
     }
     r = run("--map " + file("m.txt", "tag a 0 0 0 0\n") + " --gt-map " +
             file("g.txt", "tag a 0 0\n") + " --segments 2");
-    EXPECT_EQ(r.rc, 1);
+    EXPECT_EQ(r.rc, 2);  // a command-line error
     EXPECT_NE(r.err.find("--segments needs --path"), std::string::npos) << r.err;
 }
 

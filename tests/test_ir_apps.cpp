@@ -69,8 +69,10 @@ TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
     ASSERT_EQ(sh(localize("--emitters '" + kDir + "/run.gt_map.txt' --out-dir '" + out +
                           "' --seed 5")),
               0);
-    for (const char* f : {"path.tum", "stats.json", "settings.ini", "path.png",
-                          "errors.txt", "emitter_health.txt"})
+    // rfir-slam's names where the files are the same.
+    for (const char* f :
+         {"path.tum", "stats.json", "settings.ini", "path_map.png", "errors.json",
+          "errors_spots.json", "error_time.png", "emitter_health.txt"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     const auto path = rfir::common::loadTUM(out + "/path.tum");
     EXPECT_GT(path.size(), 200u);
@@ -92,12 +94,48 @@ TEST(IRApps, LocalizeWritesOutputsAndReproduces) {
             lines,
             rfir::ir::TEmitterSet::load(kDir + "/run.gt_map.txt").emitters().size());
     }
-    EXPECT_NE(slurp(out + "/errors.txt").find("IR MCL (spots)"), std::string::npos);
+    // errors*.json: the rows of stats.json, as rfir-slam's errors.json.
+    const auto errors = nlohmann::json::parse(slurp(out + "/errors.json"));
+    EXPECT_EQ(errors.at("label"), "IR MCL (path)");
+    EXPECT_EQ(errors, stats.at("path_errors"));
+    EXPECT_EQ(nlohmann::json::parse(slurp(out + "/errors_spots.json")),
+              stats.at("spot_errors"));
     // settings.ini + the same seed gives the same path, byte for byte.
     ASSERT_EQ(sh(localize("--config '" + out + "/settings.ini' --out-dir '" + out2 +
                           "' --seed 5")),
               0);
     EXPECT_EQ(slurp(out + "/path.tum"), slurp(out2 + "/path.tum"));
+}
+
+// --gt-path as rfir-slam's: a ground truth that is not <stem>.gt.tum beside
+// the rawlog scores the run; without either there is no error file.
+TEST(IRApps, LocalizeGroundTruthByOption) {
+    const std::string alone = kDir + "/alone", gt = kDir + "/elsewhere.tum";
+    fs::create_directories(alone);
+    fs::copy_file(rawlog(), alone + "/run.rawlog", fs::copy_options::overwrite_existing);
+    fs::copy_file(kDir + "/run.gt.tum", gt, fs::copy_options::overwrite_existing);
+    const std::string base = kBin + "rfir-localize -q --rawlog '" + alone +
+                             "/run.rawlog' --emitters '" + kDir +
+                             "/run.gt_map.txt' --seed 5 --out-dir '";
+    ASSERT_EQ(sh(base + kDir + "/no_gt'"), 0);
+    EXPECT_TRUE(fs::exists(kDir + "/no_gt/path_map.png"));
+    EXPECT_FALSE(fs::exists(kDir + "/no_gt/errors.json"));
+    EXPECT_FALSE(fs::exists(kDir + "/no_gt/error_time.png"));
+    ASSERT_EQ(sh(base + kDir + "/by_option' --gt-path '" + gt + "'"), 0);
+    const auto e = nlohmann::json::parse(slurp(kDir + "/by_option/errors.json"));
+    EXPECT_TRUE(fs::exists(kDir + "/by_option/error_time.png"));
+    // The same numbers as the automatic lookup beside the rawlog (same seed).
+    ASSERT_EQ(sh(localize("--emitters '" + kDir +
+                          "/run.gt_map.txt' --seed 5 --out-dir '" + kDir + "/auto'")),
+              0);
+    EXPECT_EQ(e, nlohmann::json::parse(slurp(kDir + "/auto/errors.json")));
+    // A --gt-path that is no file: an error before any output.
+    std::string err;
+    EXPECT_EQ(
+        sh(base + kDir + "/bad_gt' --gt-path '" + kDir + "/nosuch.tum'", nullptr, &err),
+        1);
+    EXPECT_NE(err.find("nosuch.tum"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(kDir + "/bad_gt"));
 }
 
 namespace {
@@ -204,9 +242,13 @@ TEST(IRIds, CountsAndCodes) {
     EXPECT_NE(out.find("frequencies_hz 250 1150"), std::string::npos);
     EXPECT_NE(out.find("type unique"), std::string::npos);
     std::string err;
-    EXPECT_EQ(sh(kBin + "rfir-ids encode --codes 9,3", &out, &err), 1);
-    EXPECT_NE(err.find("'9,3'"), std::string::npos);
-    EXPECT_EQ(sh(kBin + "rfir-ids frobnicate", &out, &err), 1);
+    // Command-line errors: exit 2 naming the option or the command.
+    EXPECT_EQ(sh(kBin + "rfir-ids encode --codes 9,3", &out, &err), 2);
+    EXPECT_NE(err.find("--codes: '9,3'"), std::string::npos) << err;
+    EXPECT_EQ(sh(kBin + "rfir-ids frobnicate", &out, &err), 2);
+    EXPECT_NE(err.find("unknown command 'frobnicate'"), std::string::npos) << err;
+    EXPECT_EQ(sh(kBin + "rfir-ids --frobnicate", &out, &err), 2);
+    EXPECT_NE(err.find("--frobnicate"), std::string::npos) << err;
 }
 
 // Thesis 5.3: L_r = 600, W_r = 400, 9 repeated IDs: 239,010 against 479,001.

@@ -22,18 +22,18 @@ int run(const std::string& in, const std::string& out, bool lossy, bool quiet) {
     const bool toRawlog = ki == TLogFileKind::Text && ko == TLogFileKind::Rawlog;
     const bool toText = ki == TLogFileKind::Rawlog && ko == TLogFileKind::Text;
     if (!toRawlog && !toText) {
-        std::cerr << "error: cannot tell the direction from the file names '" << in
-                  << "' -> '" << out
+        std::cerr << "rfir-import: error: cannot tell the direction from the file names '"
+                  << in << "' -> '" << out
                   << "': use --input X.txt --output Y.rawlog (import) or --input "
                      "X.rawlog --output Y.txt (export)\n";
         return 2;
     }
     if (lossy && toRawlog) {
-        std::cerr << "error: --lossy applies to rawlog -> text only\n";
+        std::cerr << "rfir-import: error: --lossy applies to rawlog -> text only\n";
         return 2;
     }
     if (!std::filesystem::is_regular_file(in)) {
-        std::cerr << "error: " << in
+        std::cerr << "rfir-import: error: " << in
                   << (std::filesystem::is_directory(in) ? ": is a directory, not a file\n"
                                                         : ": no such file\n");
         return 1;
@@ -55,7 +55,7 @@ int run(const std::string& in, const std::string& out, bool lossy, bool quiet) {
 
 int main(int argc, char** argv) {
     try {
-        TCLAP::CmdLine cmd(kDescription, ' ', "1.0");
+        TCLAP::CmdLine cmd(kDescription, ' ', RFIR_VERSION);
         TCLAP::ValueArg<std::string> in(
             "i", "input",
             std::string("input file: .txt or .rawlog") + rfir::common::kRawlogClassesHelp,
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
             return *code;
         return run(in.getValue(), out.getValue(), lossy.getValue(), quiet.getValue());
     } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
+        std::cerr << "rfir-import: error: " << e.what() << "\n";
         return 1;
     }
 }

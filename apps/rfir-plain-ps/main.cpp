@@ -12,27 +12,6 @@
 #include <string>
 
 namespace {
-template <class T>
-T parseNumber(const std::string& opt, const std::string& s) {
-    const auto v = rfir::common::parseNumber<T>(s);
-    if (!v) throw std::invalid_argument(opt + ": '" + s + "' is not a number");
-    return *v;
-}
-
-rfir::models::OdometryNoiseParams parseMotion(const std::string& s) {
-    double v[6];
-    size_t at = 0;
-    for (int k = 0; k < 6; k++) {
-        const size_t end = k < 5 ? s.find(',', at) : s.size();
-        if (end == std::string::npos || (k == 5 && s.find(',', at) != std::string::npos))
-            throw std::invalid_argument("--motion: expected 6 comma-separated numbers");
-        v[k] = parseNumber<double>("--motion", s.substr(at, end - at));
-        if (!(v[k] >= 0)) throw std::invalid_argument("--motion: values must be >= 0");
-        at = end + 1;
-    }
-    return {v[0], v[1], v[2], v[3], v[4], v[5]};
-}
-
 void writeTum(const std::string& path, const std::string& text) {
     // Whole or not at all: a temporary beside the target, then a rename.
     const std::string tmp = path + ".tmp";
@@ -52,27 +31,29 @@ int main(int argc, char** argv) {
             "rfir-plain-ps: the plain reference PS-SLAM (one file of flat loops, the "
             "stock slam_ps.ini's method without kidnap recovery) on a text log with "
             "RFID records; what rfir-bench times rfir-slam against.",
-            ' ', "0.1");
+            ' ', RFIR_VERSION);
         TCLAP::ValueArg<std::string> input("i", "input", "text log (format textlog 1)",
                                            true, "", "FILE", cmd);
         TCLAP::ValueArg<std::string> output("o", "output", "mean path to write (TUM)",
                                             false, "", "TUM", cmd);
-        TCLAP::ValueArg<std::string> particles(
-            "m", "particles", "robot particles (default 500)", false, "500", "M", cmd);
-        TCLAP::ValueArg<std::string> seed("s", "seed", "random seed (default 1)", false,
-                                          "1", "N", cmd);
-        TCLAP::ValueArg<std::string> motion(
+        rfir::common::CNumberArg<size_t> particles(
+            "m", "particles", "robot particles (default 500)", false, 500, "M", cmd, 1);
+        rfir::common::CNumberArg<uint64_t> seed("s", "seed", "random seed (default 1)",
+                                                false, 1, "N", cmd);
+        rfir::common::CNumberListArg<double> motion(
             "", "motion",
-            "odometry noise a1,a2,a3,a4,min_std_xy,min_std_phi (default MRPT's "
-            "Gaussian model's: 0.05,0.001,0.02,0.02,0.001,0.002)",
-            false, "", "LIST", cmd);
+            "odometry noise a1,a2,a3,a4,min_std_xy,min_std_phi, each >= 0 (default "
+            "MRPT's Gaussian model's: 0.05,0.001,0.02,0.02,0.001,0.002)",
+            false, "LIST", cmd, ',', 6, 0);
         if (const auto exit = rfir::common::parseCommandLine(cmd, argc, argv))
             return *exit;
         rfir::bench::TPlainOptions o;
-        o.M = parseNumber<size_t>("--particles", particles.getValue());
-        if (o.M == 0) throw std::invalid_argument("--particles: must be > 0");
-        o.seed = parseNumber<uint64_t>("--seed", seed.getValue());
-        if (motion.isSet()) o.motion = parseMotion(motion.getValue());
+        o.M = particles.getValue();
+        o.seed = seed.getValue();
+        if (motion.isSet()) {
+            const auto& v = motion.values();
+            o.motion = {v[0], v[1], v[2], v[3], v[4], v[5]};
+        }
 
         const auto log = rfir::bench::loadPlainTextLog(input.getValue());
         rfir::bench::CPlainPsCore core(o);
@@ -93,11 +74,8 @@ int main(int argc, char** argv) {
         std::cerr << "rfir-plain-ps: " << log.instants.size() << " instants, "
                   << core.tagsMapped() << " tags mapped\n";
         return 0;
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "rfir-plain-ps: error: " << e.what() << "\n";
-        return rfir::common::kUsageExitCode;
     } catch (const std::exception& e) {
-        std::cerr << "rfir-plain-ps: " << e.what() << "\n";
+        std::cerr << "rfir-plain-ps: error: " << e.what() << "\n";
         return 1;
     }
 }

@@ -52,11 +52,11 @@ std::vector<std::string> parseMethods(const std::string& s) {
     std::string item;
     while (std::getline(ss, item, ',')) {
         if (item != "ps" && item != "pf" && item != "fastslam")
-            throw std::invalid_argument("--methods: '" + item +
-                                        "' is not ps, pf or fastslam");
+            throw rfir::common::CUsageError("--methods: '" + item +
+                                            "' is not ps, pf or fastslam");
         v.push_back(item);
     }
-    if (v.empty()) throw std::invalid_argument("--methods: empty list");
+    if (v.empty()) throw rfir::common::CUsageError("--methods: empty list");
     return v;
 }
 
@@ -121,7 +121,8 @@ void runAll(TBenchReport& r, bool quiet) {
 }
 
 /** The --set edits into o (by section), checked by loading every INI the
- * bench reads with them: a bad edit fails before any work. */
+ * bench reads with them: a bad edit is a command-line error naming it, before
+ * any work; an INI's own error names its file. */
 void setEdits(TBenchOptions& o, const std::vector<std::string>& sets) {
     const auto split = rfir::common::routeIniEdits(
         {{"slam", "SLAM INIs", rfir::slam::slamConfigSections()},
@@ -130,19 +131,21 @@ void setEdits(TBenchOptions& o, const std::vector<std::string>& sets) {
     for (const auto& e : split[0])
         if (rfir::common::parseIniEdit(e).section == "slam" &&
             rfir::common::parseIniEdit(e).key == "robot_particles")
-            throw std::invalid_argument("--set " + e +
-                                        ": the robot particles are what the bench "
-                                        "varies; give them with --m");
+            throw rfir::common::CUsageError("--set " + e +
+                                            ": the robot particles are what the bench "
+                                            "varies; give them with --m");
     o.sets = sets;
-    o.slamSets = split[0];
     o.simSets = split[1];
-    try {
-        for (const auto& m : o.methods) benchConfig(o, m, o.fixedM);
-        // Also under --no-realtime: a bad edit is an error whether used or not.
-        rfir::sim::loadSimConfig(o.configDir + "/bench_floor_30x20.ini", o.simSets);
-    } catch (const std::exception& e) {  // a usage error: the INI names it
-        throw std::invalid_argument(e.what());
-    }
+    rfir::common::loadWithIniEdits(split[0], [&](const std::vector<std::string>& e) {
+        TBenchOptions c = o;
+        c.slamSets = e;
+        for (const auto& m : c.methods) benchConfig(c, m, c.fixedM);
+    });
+    o.slamSets = split[0];
+    // Also under --no-realtime: a bad edit is an error whether used or not.
+    rfir::common::loadWithIniEdits(split[1], [&](const std::vector<std::string>& e) {
+        rfir::sim::loadSimConfig(o.configDir + "/bench_floor_30x20.ini", e);
+    });
 }
 
 /** --quick: a smoke run of seconds. */
@@ -169,10 +172,16 @@ std::optional<int> parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& 
         "rfir-bench: time per SLAM update of PS-SLAM, PF-SLAM and FastSLAM against the "
         "number of robot particles M and of mapped tags N, the state's memory, a floor "
         "loop, and a whole 20-minute offline run against real time. Prints a table; "
-        "optionally writes JSON, Markdown and PNG plots. Single thread; fixed seeds.",
-        ' ', "0.1");
+        "optionally writes JSON, Markdown and PNG plots. Single thread; fixed seeds. "
+        "Give --quick (seconds) or --full (the whole sweeps: more than 10 minutes).",
+        ' ', RFIR_VERSION);
     TCLAP::SwitchArg quick("", "quick", "smoke run: M 100,500; N 10,1000; 20 updates",
                            cmd);
+    TCLAP::SwitchArg full(
+        "", "full",
+        "the whole benchmark: M 100..10000, N 10..1000000 (more than 10 "
+        "minutes; docs/benchmark.md)",
+        cmd);
     TCLAP::ValueArg<std::string> outDir(
         "", "out-dir",
         "write DIR/benchmark.json, DIR/results.md and DIR/bench_*.png (created)", false,
@@ -182,9 +191,10 @@ std::optional<int> parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& 
                                     "FILE", cmd);
     TCLAP::ValueArg<std::string> plots("", "plots", "write bench_*.png there", false, "",
                                        "DIR", cmd);
-    TCLAP::ValueArg<std::string> ms("", "m", "robot particle counts", false, "", "LIST",
-                                    cmd);
-    TCLAP::ValueArg<std::string> ns("", "n", "mapped tag counts", false, "", "LIST", cmd);
+    rfir::common::CNumberListArg<size_t> ms("", "m", "robot particle counts", false,
+                                            "LIST", cmd, ',', 0, 1);
+    rfir::common::CNumberListArg<size_t> ns("", "n", "mapped tag counts", false, "LIST",
+                                            cmd, ',', 0, 8);
     using rfir::common::CNumberArg;
     CNumberArg<size_t> updates("", "updates", "timed updates per case (200)", false, 200,
                                "K", cmd, 1);
@@ -211,33 +221,37 @@ std::optional<int> parseArgs(int argc, char** argv, TBenchOptions& o, TOutputs& 
     TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
     if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv)) return code;
 
+    if (quick.getValue() == full.getValue())
+        throw rfir::common::CUsageError(
+            quick.getValue() ? "--quick and --full: give one"
+                             : "give --quick (a smoke run of seconds) or --full (the "
+                               "whole benchmark, more than 10 minutes)");
     if (quick.getValue()) setQuick(o);
     if (rounds.isSet()) o.rounds = rounds.getValue();
-    if (ms.isSet())
-        o.sweepM = rfir::common::parseNumberList<size_t>("--m", ms.getValue(), ',', 0, 1);
-    if (ns.isSet())
-        o.sweepN = rfir::common::parseNumberList<size_t>("--n", ns.getValue(), ',', 0, 8);
+    if (ms.isSet()) o.sweepM = ms.values();
+    if (ns.isSet()) o.sweepN = ns.values();
     if (updates.isSet()) o.timedUpdates = updates.getValue();
     if (rtSec.isSet()) o.realtimeSeconds = rtSec.getValue();
     if (!(o.realtimeSeconds > 0))
-        throw std::invalid_argument("--realtime-seconds must be > 0");
+        throw rfir::common::CUsageError("--realtime-seconds must be > 0");
     o.maxFastSlamMN = maxMN.getValue();
     if (methods.isSet()) o.methods = parseMethods(methods.getValue());
     o.realtime = !noRealtime.getValue();
     o.seed = seed.getValue();
     o.configDir = cfgDir.isSet() ? cfgDir.getValue() : defaultConfigDir();
+    if (cfgDir.isSet()) rfir::common::checkFolderOption("--config-dir", o.configDir);
     setEdits(o, sets.getValue());  // before --out-dir is created
     out = {json.getValue(), md.getValue(), plots.getValue(), quiet.getValue()};
     if (outDir.isSet()) {
         const std::string d = outDir.getValue();
         if (!mrpt::system::directoryExists(d) && !mrpt::system::createDirectory(d))
-            throw std::invalid_argument("--out-dir: cannot create '" + d + "'");
+            throw rfir::common::CUsageError("--out-dir: cannot create '" + d + "'");
         if (out.json.empty()) out.json = d + "/benchmark.json";
         if (out.markdown.empty()) out.markdown = d + "/results.md";
         if (out.plots.empty()) out.plots = d;
     }
     if (!out.plots.empty() && !mrpt::system::directoryExists(out.plots))
-        throw std::invalid_argument("--plots: no folder '" + out.plots + "'");
+        throw rfir::common::CUsageError("--plots: no folder '" + out.plots + "'");
     return std::nullopt;
 }
 }  // namespace
@@ -248,7 +262,7 @@ int main(int argc, char** argv) {
         TOutputs out;
         try {
             if (const auto code = parseArgs(argc, argv, r.options, out)) return *code;
-        } catch (const std::invalid_argument& e) {  // a bad value: before any work
+        } catch (const rfir::common::CUsageError& e) {  // a bad value: before any work
             std::cerr << "rfir-bench: error: " << e.what() << "\n";
             return rfir::common::kUsageExitCode;
         }
@@ -266,9 +280,6 @@ int main(int argc, char** argv) {
                                 [&](std::ostream& f) { f << toMarkdown(r); });
         if (!out.plots.empty()) writePlots(r, out.plots);
         return 0;
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "rfir-bench: " << e.error() << " (" << e.argId() << ")\n";
-        return 2;
     } catch (const std::exception& e) {
         std::cerr << "rfir-bench: error: " << e.what() << "\n";
         return 1;

@@ -27,7 +27,7 @@ TEvalArgs parse(int argc, char** argv) {
         "Compares an estimated robot path (TUM) and landmark map with the ground truth: "
         "mean and max of |dx|, |dy|, |dtheta| and distance (the seeds' tables), mapped "
         "vs passed-over tags. Prints a table (mm, rad) and one JSON line (m, rad).",
-        ' ', "0.1");
+        ' ', RFIR_VERSION);
     TCLAP::ValueArg<std::string> path("", "path", "estimated robot path (TUM)", false, "",
                                       "EST.tum", cmd);
     TCLAP::ValueArg<std::string> gtPath("", "gt-path", "ground-truth path (TUM)", false,
@@ -36,10 +36,12 @@ TEvalArgs parse(int argc, char** argv) {
                                      false, "", "EST_MAP", cmd);
     TCLAP::ValueArg<std::string> gtMap("", "gt-map", "ground-truth map", false, "",
                                        "GT_MAP", cmd);
+    std::vector<std::string> kinds = {"tag", "landmark"};
+    TCLAP::ValuesConstraint<std::string> kindNames(kinds);
     TCLAP::ValueArg<std::string> kind("", "kind",
-                                      "map records to evaluate: tag or "
-                                      "landmark (default: those of the estimated map)",
-                                      false, "", "tag|landmark", cmd);
+                                      "map records to evaluate (default: those of the "
+                                      "estimated map)",
+                                      false, "", &kindNames, cmd);
     TCLAP::ValueArg<std::string> rawlog(
         "", "rawlog",
         std::string("the rawlog of the run: reader / sensor geometry for the "
@@ -103,9 +105,9 @@ int main(int argc, char** argv) {
         return rfir::evalapp::runEvalApp(parse(argc, argv));
     } catch (const TExit& e) {
         return e.code;
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "rfir-eval: error: " << e.error() << " for " << e.argId() << "\n";
-        return 2;
+    } catch (const rfir::common::CUsageError& e) {  // thrown before any work
+        std::cerr << "rfir-eval: error: " << e.what() << "\n";
+        return rfir::common::kUsageExitCode;
     } catch (const std::exception& e) {
         std::cerr << "rfir-eval: error: " << e.what() << "\n";
         return 1;

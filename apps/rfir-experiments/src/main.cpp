@@ -39,8 +39,8 @@ std::vector<TRow> selectRows(const std::string& list, bool quick) {
     for (const auto& r : rows)
         if (want.erase(r.id)) out.push_back(r);
     if (!want.empty())
-        throw std::invalid_argument("--rows: unknown row '" + *want.begin() +
-                                    "' (see --list)");
+        throw rfir::common::CUsageError("--rows: unknown row '" + *want.begin() +
+                                        "' (see --list)");
     return out;
 }
 
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
             "(PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on the same simulated data, "
             "several seeds each) and writes OUT/results.json (every raw number), "
             "OUT/results.md (tables beside the seeds' numbers) and OUT/img/exp_*.png.",
-            ' ', "0.1");
+            ' ', RFIR_VERSION);
         TCLAP::ValueArg<std::string> rows("", "rows",
                                           "comma-separated row ids (default: all; "
                                           "see --list)",
@@ -153,16 +153,18 @@ int main(int argc, char** argv) {
         std::vector<TRow> selected;
         TSetup setup;
         try {  // usage errors: exit as a parse error does
+            using rfir::common::CUsageError;
             selected = selectRows(rows.getValue(), quick.getValue());
             if (!list.getValue() && out.getValue().empty())
-                throw std::invalid_argument("--out-dir DIR is required");
+                throw CUsageError("--out-dir DIR is required");
             if (notes.isSet() && !mrpt::system::fileExists(notes.getValue()))
-                throw std::invalid_argument("--notes: cannot read '" + notes.getValue() +
-                                            "'");
+                throw CUsageError("--notes: cannot read '" + notes.getValue() + "'");
+            rfir::common::checkFolderOption("--config-dir", cfgDir.getValue());
             setup = makeSetup(cfgDir.getValue(), sets.getValue());
-            // Every INI with every edit, before hours of work.
+            // Every INI with every edit, before hours of work (an INI's own
+            // error passes on: exit 1 naming the file).
             if (!list.getValue()) checkConfigs(setup, selected);
-        } catch (const std::invalid_argument& e) {
+        } catch (const rfir::common::CUsageError& e) {
             std::cerr << "rfir-experiments: error: " << e.what() << "\n";
             return rfir::common::kUsageExitCode;
         }

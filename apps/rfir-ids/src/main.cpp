@@ -16,13 +16,14 @@
 
 using namespace rfir::ir;
 using rfir::common::CNumberArg;
+using rfir::common::CUsageError;
 
 namespace {
 struct TArgs {
     TCLAP::CmdLine cmd{"rfir-ids: IR emitter ID scheme and emitter layout planner", ' ',
-                       "0.1"};
-    TCLAP::UnlabeledValueArg<std::string> command{
-        "command", "encode | decode | count | plan | memory", true, "", "command", cmd};
+                       RFIR_VERSION};
+    rfir::common::CSubcommandArg command{
+        "command", {"encode", "decode", "count", "plan", "memory"}, cmd};
     TCLAP::ValueArg<std::string> codes{
         "", "codes", "encode: codes, e.g. 3,9", false, "", "LIST", cmd};
     TCLAP::ValueArg<std::string> id{"",   "id", "decode: emitter ID, e.g. 39", false, "",
@@ -67,8 +68,8 @@ struct TArgs {
 int cmdEncode(TArgs& a) {
     const auto c = parseCodeList(a.codes.getValue());
     if (!c)
-        throw std::runtime_error("--codes: '" + a.codes.getValue() +
-                                 "' is not an ascending list of codes 1..9 (e.g. 3,9)");
+        throw CUsageError("--codes: '" + a.codes.getValue() +
+                          "' is not an ascending list of codes 1..9 (e.g. 3,9)");
     std::cout << emitterIdFromCodes(*c) << "\n";
     return 0;
 }
@@ -76,8 +77,8 @@ int cmdEncode(TArgs& a) {
 int cmdDecode(TArgs& a) {
     const auto c = codesFromEmitterId(a.id.getValue());
     if (!c)
-        throw std::runtime_error("--id: '" + a.id.getValue() +
-                                 "' is not an emitter ID (ascending digits 1..9)");
+        throw CUsageError("--id: '" + a.id.getValue() +
+                          "' is not an emitter ID (ascending digits 1..9)");
     std::cout << "id " << a.id.getValue() << "\ncodes " << formatCodeList(*c)
               << "\nfrequencies_hz";
     for (auto k : *c) std::cout << " " << codeFrequencyHz(k);
@@ -86,7 +87,7 @@ int cmdDecode(TArgs& a) {
 }
 
 int cmdPlan(TArgs& a) {
-    if (!a.room.isSet()) throw std::runtime_error("plan: --room is required");
+    if (!a.room.isSet()) throw CUsageError("plan: --room is required");
     const auto b =
         rfir::common::parseNumberList<double>("--room", a.room.getValue(), ' ', 4);
     TRoom room{b[0], b[1], b[2], b[3]};
@@ -94,7 +95,7 @@ int cmdPlan(TArgs& a) {
     p.pitch = a.pitch.getValue();
     p.height = a.height.getValue();
     const auto rc = parseCodeList(a.repCodes.getValue());
-    if (!rc) throw std::runtime_error("--repeated-codes: not an ascending list of 1..9");
+    if (!rc) throw CUsageError("--repeated-codes: not an ascending list of 1..9");
     p.repeatedCodes = *rc;
     p.uniqueCodesPerId = a.uniqueCodes.getValue();
     p.allUnique = a.allUnique.getValue();
@@ -111,7 +112,7 @@ int cmdPlan(TArgs& a) {
 }
 
 int cmdMemory(TArgs& a) {
-    if (!a.grid.isSet()) throw std::runtime_error("memory: --grid is required");
+    if (!a.grid.isSet()) throw CUsageError("memory: --grid is required");
     // Bounded so that the record counts stay within 64 bits.
     const auto g = rfir::common::parseNumberList<uint64_t>("--grid", a.grid.getValue(),
                                                            ' ', 2, 2, 1000000);
@@ -141,14 +142,12 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (c == "plan") return cmdPlan(a);
-        if (c == "memory") return cmdMemory(a);
-        throw std::runtime_error("unknown command '" + c +
-                                 "' (encode, decode, count, plan, memory)");
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "rfir-ids: " << e.error() << " (" << e.argId() << ")\n";
-        return 2;
+        return cmdMemory(a);          // CSubcommandArg took no other name
+    } catch (const CUsageError& e) {  // thrown before the command's output
+        std::cerr << "rfir-ids: error: " << e.what() << "\n";
+        return rfir::common::kUsageExitCode;
     } catch (const std::exception& e) {
-        std::cerr << "rfir-ids: " << e.what() << "\n";
+        std::cerr << "rfir-ids: error: " << e.what() << "\n";
         return 1;
     }
 }

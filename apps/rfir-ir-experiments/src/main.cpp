@@ -33,9 +33,9 @@ std::set<std::string> onlyList(const std::string& list) {
     std::stringstream ss(list);
     for (std::string w; std::getline(ss, w, ',');) {
         if (!known.count(w))
-            throw std::invalid_argument("--only: unknown experiment '" + w +
-                                        "' (config, rotation, speed, failed, height, "
-                                        "assoc, particles, raw)");
+            throw rfir::common::CUsageError("--only: unknown experiment '" + w +
+                                            "' (config, rotation, speed, failed, height, "
+                                            "assoc, particles, raw)");
         want.insert(w);
     }
     return want;
@@ -68,7 +68,7 @@ std::string header(const TOptions& o, const std::string& only, const std::string
 
 int main(int argc, char** argv) {
     TCLAP::CmdLine cmd("Runs the IR experiments of thesis chapter 5 in simulation.", ' ',
-                       "0.1");
+                       RFIR_VERSION);
     TCLAP::ValueArg<std::string> cfgDir(
         "", "config-dir", "folder of the INIs (default: the stock INIs)", false,
         rfir::common::stockConfigDir(), "DIR", cmd);
@@ -108,8 +108,9 @@ int main(int argc, char** argv) {
             return *code;
         const std::set<std::string> want = onlyList(only.getValue());
         if (notes.isSet() && !fs::is_regular_file(notes.getValue()))
-            throw std::invalid_argument("--notes: cannot read '" + notes.getValue() +
-                                        "'");
+            throw rfir::common::CUsageError("--notes: cannot read '" + notes.getValue() +
+                                            "'");
+        rfir::common::checkFolderOption("--config-dir", cfgDir.getValue());
         rfir::obs::registerAllClasses();
         rfir::maps::registerIRClasses();
         TSession s;
@@ -147,10 +148,9 @@ int main(int argc, char** argv) {
             std::cerr << "rfir-ir-experiments: wrote " << out.getValue()
                       << "/results_ir.md (" << fmt(secs, 0) << " s)\n";
         return 0;
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "rfir-ir-experiments: error: " << e.error() << " (" << e.argId()
-                  << ")\n";
-        return 2;
+    } catch (const rfir::common::CUsageError& e) {  // thrown before any work
+        std::cerr << "rfir-ir-experiments: error: " << e.what() << "\n";
+        return rfir::common::kUsageExitCode;
     } catch (const std::exception& e) {
         std::cerr << "rfir-ir-experiments: error: " << e.what() << "\n";
         return 1;

@@ -6,6 +6,7 @@
 #include <rfir/localize/localize_run.h>
 
 #include <rfir/common/cli.h>
+#include <rfir/common/ini_override.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -21,7 +22,9 @@ const char* kDescription =
     "receivers read ceiling IR emitters of known positions, from an unknown start; the "
     "estimate is reported from the first unique-ID reading on. Raw receiver windows are "
     "FFT-decoded when the rawlog has no codes. Writes OUT/path.tum, stats.json, "
-    "settings.ini, path.png and, when <stem>.gt.tum lies beside the rawlog, errors.txt. "
+    "settings.ini, path_map.png, emitter_health.txt and, with a ground-truth path "
+    "(--gt-path, or <stem>.gt.tum beside the rawlog), errors.json and error_time.png "
+    "(errors_spots.json with <stem>.spots.tum). "
     "Default configuration: <exe_dir>/../share/rfir/config_ini/ir_localize.ini.";
 
 std::string joinArgs(int argc, char** argv) {
@@ -30,24 +33,38 @@ std::string joinArgs(int argc, char** argv) {
     return s;
 }
 
+/** The ground truth: --gt-path, else <stem>.gt.tum beside the rawlog (as
+ * rfir-slam); read before anything is written, so that a bad file fails
+ * first. Its first pose (the dead reckoning's start without a known one). */
+std::optional<mrpt::poses::CPose2D> groundTruthStart(rfir::localize::TConfig& cfg) {
+    const std::string gt = rfir::common::rawlogStem(cfg.rawlogPath) + ".gt.tum";
+    if (cfg.gtPath.empty() && std::filesystem::exists(gt)) cfg.gtPath = gt;
+    if (cfg.gtPath.empty()) return std::nullopt;
+    const auto p = rfir::common::loadTUM(cfg.gtPath);
+    if (p.empty()) return std::nullopt;
+    return p.front().pose;
+}
+
 int run(rfir::localize::TConfig& cfg, const std::string& emitters,
         const std::string& cmd) {
     namespace fs = std::filesystem;
+    // A --set edit the INI refuses is a command-line error naming it (checked
+    // before the emitter file is required), then the whole configuration.
+    rfir::common::loadWithIniEdits(cfg.overrides, [&](const std::vector<std::string>& e) {
+        auto c = cfg;
+        c.overrides = e;
+        rfir::localize::loadConfig(c, emitters, false);
+    });
     rfir::localize::loadConfig(cfg, emitters);
     if (fs::is_directory(cfg.rawlogPath))
         throw std::runtime_error(cfg.rawlogPath + ": is a directory, not a rawlog file");
     if (!fs::is_regular_file(cfg.rawlogPath))
         throw std::runtime_error(cfg.rawlogPath + ": rawlog not found");
+    const auto gtStart = groundTruthStart(cfg);
     std::error_code ec;
     fs::create_directories(cfg.outDir, ec);
     if (!fs::is_directory(cfg.outDir))
         throw std::runtime_error(cfg.outDir + ": cannot create the output directory");
-    std::optional<mrpt::poses::CPose2D> gtStart;
-    const std::string gt = rfir::common::rawlogStem(cfg.rawlogPath) + ".gt.tum";
-    if (fs::exists(gt)) {
-        const auto p = rfir::common::loadTUM(gt);
-        if (!p.empty()) gtStart = p.front().pose;
-    }
     if (!cfg.quiet)
         std::cerr << "rfir-localize: " << cfg.rawlogPath << ", " << cfg.map->asString()
                   << ", " << (cfg.odometryOnly ? "odometry only" : "M = ")
@@ -72,7 +89,7 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
 }  // namespace
 
 int main(int argc, char** argv) {
-    TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
+    TCLAP::CmdLine cmd(kDescription, ' ', RFIR_VERSION);
     TCLAP::ValueArg<std::string> rawlog(
         "", "rawlog", std::string("input rawlog") + rfir::common::kRawlogClassesHelp,
         true, "", "FILE", cmd);
@@ -81,10 +98,14 @@ int main(int argc, char** argv) {
         false, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", true, "", "DIR",
                                         cmd);
-    TCLAP::ValueArg<std::string> config(
+    rfir::common::CConfigArg config(
         "", "config",
         "INI file, or a stock one by name (e.g. ir_localize); default: the stock one",
-        false, "", "INI", cmd);
+        false, cmd, "ir_localize");
+    TCLAP::ValueArg<std::string> gtPath(
+        "", "gt-path",
+        "ground-truth path (TUM; default: <stem>.gt.tum beside the rawlog, if there)",
+        false, "", "TUM", cmd);
     rfir::common::CNumberArg<uint64_t> seed("", "seed", "random seed (default 1)", false,
                                             1, "N", cmd);
     TCLAP::SwitchArg odoOnly("", "odometry-only",
@@ -102,8 +123,8 @@ int main(int argc, char** argv) {
         rfir::obs::registerAllClasses();
         rfir::maps::registerIRClasses();
         rfir::localize::TConfig cfg;
-        cfg.iniPath = config.isSet() ? rfir::common::resolveConfigFile(config.getValue())
-                                     : rfir::localize::stockIniPath();
+        cfg.iniPath = config.isSet() ? config.getValue() : rfir::localize::stockIniPath();
+        cfg.gtPath = gtPath.getValue();
         cfg.rawlogPath = rawlog.getValue();
         cfg.outDir = outDir.getValue();
         cfg.seed = seed.getValue();
@@ -111,9 +132,9 @@ int main(int argc, char** argv) {
         cfg.quiet = quiet.getValue();
         cfg.overrides = sets.getValue();
         return run(cfg, emitters.getValue(), joinArgs(argc, argv));
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "rfir-localize: error: " << e.error() << " (" << e.argId() << ")\n";
-        return 2;
+    } catch (const rfir::common::CUsageError& e) {  // thrown before any work
+        std::cerr << "rfir-localize: error: " << e.what() << "\n";
+        return rfir::common::kUsageExitCode;
     } catch (const std::exception& e) {
         std::cerr << "rfir-localize: error: " << rfir::localize::cleanMessage(e) << "\n";
         return 1;

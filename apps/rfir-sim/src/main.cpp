@@ -1,6 +1,7 @@
 /* rfir-sim: simulates one run of the seeds' setups from an INI file and writes
  * its rawlog and ground truth. See docs/simulator.md. */
 #include <rfir/common/cli.h>
+#include <rfir/common/ini_override.h>
 #include <rfir/obs/registerAllClasses.h>
 #include <rfir/sim/simulator.h>
 
@@ -25,16 +26,19 @@ const char* kDescription =
 int run(const std::string& ini, const std::vector<std::string>& sets,
         const std::string& dir, uint64_t seed, std::string name, bool quiet) {
     namespace fs = std::filesystem;
-    const auto cfg = rfir::sim::loadSimConfig(ini, sets);
     if (name.empty()) name = fs::path(ini).stem().string();
-    if (name.empty() || name.find('/') != std::string::npos) {
-        std::cerr << "error: --name '" << name << "' is not a file name\n";
-        return 2;
-    }
+    if (name.empty() || name.find('/') != std::string::npos)
+        throw rfir::common::CUsageError("--name '" + name + "' is not a file name");
+    // A --set edit the INI refuses is a command-line error naming it.
+    rfir::sim::TSimConfig cfg;
+    rfir::common::loadWithIniEdits(sets, [&](const std::vector<std::string>& e) {
+        cfg = rfir::sim::loadSimConfig(ini, e);
+    });
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (!fs::is_directory(dir)) {
-        std::cerr << "error: " << dir << ": cannot create the output directory\n";
+        std::cerr << "rfir-sim: error: " << dir
+                  << ": cannot create the output directory\n";
         return 1;
     }
     if (!quiet)
@@ -70,11 +74,11 @@ int run(const std::string& ini, const std::vector<std::string>& sets,
 int main(int argc, char** argv) {
     try {
         rfir::obs::registerAllClasses();
-        TCLAP::CmdLine cmd(kDescription, ' ', "1.0");
-        TCLAP::ValueArg<std::string> ini(
+        TCLAP::CmdLine cmd(kDescription, ' ', RFIR_VERSION);
+        rfir::common::CConfigArg ini(
             "c", "config",
-            "simulation INI file, or a stock one by name (e.g. sim_kidnap)", true, "",
-            "INI", cmd);
+            "simulation INI file, or a stock one by name (e.g. sim_kidnap)", true, cmd,
+            "sim_");
         TCLAP::ValueArg<std::string> dir("", "out-dir", "output directory (created)",
                                          true, "", "DIR", cmd);
         rfir::common::CNumberArg<uint64_t> seed("s", "seed", "random seed (default 1)",
@@ -91,10 +95,13 @@ int main(int argc, char** argv) {
         if (const auto code =
                 rfir::common::parseCommandLine(cmd, argc, argv, {{"-o", "--out-dir"}}))
             return *code;
-        return run(rfir::common::resolveConfigFile(ini.getValue()), sets.getValue(),
-                   dir.getValue(), seed.getValue(), name.getValue(), quiet.getValue());
+        return run(ini.getValue(), sets.getValue(), dir.getValue(), seed.getValue(),
+                   name.getValue(), quiet.getValue());
+    } catch (const rfir::common::CUsageError& e) {  // thrown before any work
+        std::cerr << "rfir-sim: error: " << e.what() << "\n";
+        return rfir::common::kUsageExitCode;
     } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
+        std::cerr << "rfir-sim: error: " << e.what() << "\n";
         return 1;
     }
 }

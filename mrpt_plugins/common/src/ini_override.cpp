@@ -9,8 +9,7 @@ TIniEdit parseIniEdit(const std::string& edit) {
     const auto eq = edit.find('=');
     const auto dot = eq == std::string::npos ? std::string::npos : edit.rfind('.', eq);
     if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 >= eq)
-        throw std::invalid_argument("INI edit (--set) '" + edit +
-                                    "': expected section.key=value");
+        throw CUsageError("--set " + edit + ": expected section.key=value");
     return {edit.substr(0, dot), edit.substr(dot + 1, eq - dot - 1), edit.substr(eq + 1)};
 }
 
@@ -24,6 +23,42 @@ void applyIniOverride(mrpt::config::CConfigFileBase& ini, const std::string& edi
 void applyIniOverrides(mrpt::config::CConfigFileBase& ini,
                        const std::vector<std::string>& edits) {
     for (const auto& e : edits) applyIniOverride(ini, e);
+}
+
+namespace {
+/** A loader's message about the edit `e`, without the INI's file name before
+ * "[section]" (the value is not the file's). */
+std::string withoutFileName(const std::string& msg, const TIniEdit& e) {
+    const auto at = msg.find(": [" + e.section + "]");
+    return at == std::string::npos ? msg : msg.substr(at + 2);
+}
+}  // namespace
+
+void loadWithIniEdits(const std::vector<std::string>& edits,
+                      const std::function<void(const std::vector<std::string>&)>& load) {
+    for (const auto& e : edits) parseIniEdit(e);
+    try {
+        load(edits);
+        return;
+    } catch (const CUsageError&) {
+        throw;
+    } catch (const std::exception&) {
+        if (edits.empty()) throw;
+    }
+    load({});  // throws the INI's own error, naming the file
+    // The INI alone loads: the edits are to blame, the first that breaks it.
+    std::vector<std::string> some;
+    for (const auto& e : edits) {
+        some.push_back(e);
+        try {
+            load(some);
+        } catch (const CUsageError&) {
+            throw;
+        } catch (const std::exception& x) {
+            throw CUsageError("--set " + e + ": " +
+                              withoutFileName(x.what(), parseIniEdit(e)));
+        }
+    }
 }
 
 namespace {
@@ -56,30 +91,29 @@ size_t kindOf(const std::vector<TIniKind>& kinds, std::string& edit) {
         for (size_t i = 0; i < kinds.size(); i++)
             if (kinds[i].name == name) named = i;
         if (!named)
-            throw std::invalid_argument("--set '" + given + "': no INI kind '" + name +
-                                        ":' (" + sectionsHelp(kinds) + ")");
+            throw CUsageError("--set " + given + ": no INI kind '" + name + ":' (" +
+                              sectionsHelp(kinds) + ")");
         edit = edit.substr(colon + 1);
     }
     const std::string section = parseIniEdit(edit).section;
     if (named) {
         if (knows(kinds[*named], section)) return *named;
-        throw std::invalid_argument("--set '" + given + "': [" + section +
-                                    "]: unknown section in the " +
-                                    kinds[*named].description +
-                                    " (known: " + listOf(kinds[*named].sections) + ")");
+        throw CUsageError("--set " + given + ": [" + section +
+                          "]: unknown section in the " + kinds[*named].description +
+                          " (known: " + listOf(kinds[*named].sections) + ")");
     }
     std::vector<size_t> found;
     for (size_t i = 0; i < kinds.size(); i++)
         if (knows(kinds[i], section)) found.push_back(i);
     if (found.size() == 1) return found.front();
     if (found.empty())
-        throw std::invalid_argument("--set '" + given + "': [" + section +
-                                    "]: unknown section (" + sectionsHelp(kinds) + ")");
+        throw CUsageError("--set " + given + ": [" + section + "]: unknown section (" +
+                          sectionsHelp(kinds) + ")");
     std::string both;
     for (size_t i : found)
         both += (both.empty() ? "" : " or ") + kinds[i].name + ":" + edit;
-    throw std::invalid_argument("--set '" + given + "': [" + section +
-                                "] is a section of several kinds of INI: write " + both);
+    throw CUsageError("--set " + given + ": [" + section +
+                      "] is a section of several kinds of INI: write " + both);
 }
 }  // namespace
 

@@ -2,6 +2,7 @@
 #include <rfir/common/output_set.h>
 
 #include <rfir/common/json.h>
+#include <rfir/version.h>
 
 #include <mrpt/system/md5.h>
 
@@ -199,7 +200,7 @@ std::string fileMD5(const std::string& path) {
 }
 
 std::string rfirVersion() {
-    return RFIR_VERSION_STRING;
+    return RFIR_VERSION;
 }
 
 std::string runIdentityJson(uint64_t seed, const std::string& iniPath,

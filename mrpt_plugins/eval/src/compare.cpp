@@ -2,6 +2,8 @@
 
 #include "report_json.h"
 
+#include <rfir/common/usage_error.h>
+
 #include <stdexcept>
 
 namespace rfir::eval {
@@ -10,8 +12,8 @@ using rfir::common::TMapEntry;
 TRunSpec parseRunSpec(const std::string& s) {
     const auto eq = s.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
-        throw std::invalid_argument("--run '" + s +
-                                    "': expected LABEL=PATH.tum or LABEL=PATH.tum,MAP");
+        throw rfir::common::CUsageError(
+            "--run '" + s + "': expected LABEL=PATH.tum or LABEL=PATH.tum,MAP");
     TRunSpec r;
     r.label = s.substr(0, eq);
     const std::string rest = s.substr(eq + 1);
@@ -19,7 +21,7 @@ TRunSpec parseRunSpec(const std::string& s) {
     r.path = rest.substr(0, comma);
     if (comma != std::string::npos) r.map = rest.substr(comma + 1);
     if (r.path.empty() || (comma != std::string::npos && r.map.empty()))
-        throw std::invalid_argument("--run '" + s + "': empty path or map file name");
+        throw rfir::common::CUsageError("--run '" + s + "': empty path or map file name");
     return r;
 }
 
@@ -59,7 +61,7 @@ TEvalResult scoreRun(const TRunSpec& s, const TCompareInput& in,
     }
     if (!s.map.empty()) {
         if (!in.gtMap)
-            throw std::invalid_argument("--run " + s.label + ": a map needs --gt-map");
+            throw std::runtime_error("--run " + s.label + ": a map needs --gt-map");
         map = rfir::common::loadMapFile(s.map);
         r.map = computeMapErrors(map, *in.gtMap);
         if (in.rawlog) addPassedOver(*r.map, map, *in.gtMap, in.gt, *in.rawlog);

@@ -5,6 +5,7 @@
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/trajectory_io.h>
+#include <rfir/common/usage_error.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
@@ -18,31 +19,35 @@ using rfir::common::TMapEntry;
 
 void validateEvalArgs(const TEvalArgs& a) {
     if (!a.runs.empty() && (!a.path.empty() || !a.map.empty() || a.segments > 0))
-        throw std::invalid_argument(
+        throw rfir::common::CUsageError(
             "--run compares whole runs: give each path and map in its --run, "
             "without --path, --map or --segments");
     if (!a.runs.empty() && a.gtPath.empty())
-        throw std::invalid_argument("--run needs --gt-path (the ground-truth path)");
+        throw rfir::common::CUsageError("--run needs --gt-path (the ground-truth path)");
+    for (const auto& r : a.runs)
+        if (!r.map.empty() && a.gtMap.empty())
+            throw rfir::common::CUsageError("--run " + r.label +
+                                            ": a map needs --gt-map");
     if (!a.runs.empty()) return;
     if (!a.path.empty() && a.gtPath.empty())
-        throw std::invalid_argument("--path needs --gt-path (the ground-truth path)");
+        throw rfir::common::CUsageError("--path needs --gt-path (the ground-truth path)");
     if (!a.errorPlot.empty() && a.path.empty())
-        throw std::invalid_argument("--error-plot needs --path and --gt-path");
+        throw rfir::common::CUsageError("--error-plot needs --path and --gt-path");
     if (a.segments < 0)
-        throw std::invalid_argument(
+        throw rfir::common::CUsageError(
             "--segments must be a positive number of windows, not " +
             std::to_string(a.segments));
     if (a.segments > 0 && a.path.empty())
-        throw std::invalid_argument("--segments needs --path and --gt-path");
+        throw rfir::common::CUsageError("--segments needs --path and --gt-path");
     if (!a.map.empty() && a.gtMap.empty())
-        throw std::invalid_argument("--map needs --gt-map (the ground-truth map)");
+        throw rfir::common::CUsageError("--map needs --gt-map (the ground-truth map)");
     if (a.path.empty() && a.map.empty())
-        throw std::invalid_argument(
+        throw rfir::common::CUsageError(
             "nothing to evaluate: give --path/--gt-path and/or "
             "--map/--gt-map (see --help)");
     if (!a.kind.empty() && a.kind != "tag" && a.kind != "landmark")
-        throw std::invalid_argument("--kind must be 'tag' or 'landmark', not '" + a.kind +
-                                    "'");
+        throw rfir::common::CUsageError("--kind must be 'tag' or 'landmark', not '" +
+                                        a.kind + "'");
 }
 
 namespace {

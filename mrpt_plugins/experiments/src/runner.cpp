@@ -73,17 +73,27 @@ TSetup makeSetup(const std::string& configDir, const std::vector<std::string>& s
 }
 
 void checkConfigs(const TSetup& setup, const std::vector<TRow>& rows) {
-    try {
-        for (const auto& row : rows)
-            for (const auto& p : row.points) {
-                for (const auto& r : row.runs)
-                    rfir::sim::loadSimConfig(setup.configDir + "/" + r.simIni,
-                                             simOverrides(setup, r, p));
-                for (const auto& m : row.methods) slamConfig(setup, m, p);
-            }
-    } catch (const std::exception& e) {  // a usage error: the INI names it
-        throw std::invalid_argument(e.what());
-    }
+    // The user's edits are the command line's: an INI they break is a
+    // CUsageError naming the edit; the rows' own are the project's.
+    rfir::common::loadWithIniEdits(
+        setup.simEdits, [&](const std::vector<std::string>& e) {
+            TSetup s = setup;
+            s.simEdits = e;
+            for (const auto& row : rows)
+                for (const auto& p : row.points)
+                    for (const auto& r : row.runs)
+                        rfir::sim::loadSimConfig(s.configDir + "/" + r.simIni,
+                                                 simOverrides(s, r, p));
+        });
+    rfir::common::loadWithIniEdits(setup.slamEdits,
+                                   [&](const std::vector<std::string>& e) {
+                                       TSetup s = setup;
+                                       s.slamEdits = e;
+                                       for (const auto& row : rows)
+                                           for (const auto& p : row.points)
+                                               for (const auto& m : row.methods)
+                                                   slamConfig(s, m, p);
+                                   });
 }
 
 TDataSet simulateDataSet(const TSetup& setup, const TSubRun& run, const TPoint& point,

@@ -175,16 +175,17 @@ void setEdits(TSession& s, const std::vector<std::string>& sets) {
     static const char* kSimInis[] = {"sim_ir_loop.ini",        "sim_ir_exp_strip.ini",
                                      "sim_ir_unique_only.ini", "sim_ir_rotation.ini",
                                      "sim_ir_failed.ini",      "sim_ir_raw.ini"};
-    try {
-        for (const char* f : kSimInis)
-            rfir::sim::loadSimConfig(s.configDir + "/" + f, s.simSets);
+    // An edit an INI refuses is a command-line error naming it; an INI's own
+    // error names the file.
+    rfir::common::loadWithIniEdits(s.simSets, [&](const std::vector<std::string>& e) {
+        for (const char* f : kSimInis) rfir::sim::loadSimConfig(s.configDir + "/" + f, e);
+    });
+    rfir::common::loadWithIniEdits(s.locSets, [&](const std::vector<std::string>& e) {
         rfir::localize::TConfig cfg;
         cfg.iniPath = s.configDir + "/ir_localize.ini";
-        cfg.overrides = s.locSets;
+        cfg.overrides = e;
         rfir::localize::loadConfig(cfg, "", false);
-    } catch (const std::exception& e) {  // a usage error: the INI names it
-        throw std::invalid_argument(e.what());
-    }
+    });
 }
 
 void progress(const TSession& s, const std::string& what) {

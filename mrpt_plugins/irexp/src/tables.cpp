@@ -57,7 +57,7 @@ std::string figure(const TSession& s, const TOptions& opt, const TRunSpec& spec,
     const std::string dir = s.workDir + "/fig_" + name;
     runOne(s, spec, s.firstSeed, dir);
     fs::create_directories(opt.imgDir);
-    fs::copy_file(dir + "/path.png", opt.imgDir + "/" + name,
+    fs::copy_file(dir + "/path_map.png", opt.imgDir + "/" + name,
                   fs::copy_options::overwrite_existing);
     return "![" + caption + "](" + opt.imgRel + "/" + name + ")\n\n*" + caption + "*\n\n";
 }

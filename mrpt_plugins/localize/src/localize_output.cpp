@@ -6,6 +6,7 @@
 #include <rfir/common/json.h>
 #include <rfir/common/map_io.h>
 #include <rfir/common/output_set.h>
+#include <rfir/eval/compare.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
@@ -39,8 +40,8 @@ struct TEvals {
 TEvals evaluate(const TConfig& cfg, const TRunResult& res) {
     TEvals ev;
     const std::string stem = rfir::common::rawlogStem(cfg.rawlogPath);
-    if (!fs::exists(stem + ".gt.tum")) return ev;
-    ev.gt = rfir::common::loadTUM(stem + ".gt.tum");
+    if (cfg.gtPath.empty()) return ev;
+    ev.gt = rfir::common::loadTUM(cfg.gtPath);
     const std::string label = cfg.odometryOnly ? "odometry only" : "IR MCL";
     rfir::eval::TEvalResult traj;
     traj.label = label + " (path)";
@@ -142,15 +143,16 @@ std::string statsJson(const TConfig& cfg, const TRunResult& res, const TEvals& e
     j["odometry_start"] = res.odometryStart;
     j["filter_seconds"] = printed(res.seconds, "%.10g");
     j["run"] = TJson::parse(identity);
-    // The error rows as rfir_eval writes them (errors.json, rfir-eval --json-file).
+    // The error rows as rfir_eval writes them (errors*.json, rfir-eval --json-file).
     for (size_t i = 0; i < ev.rows.size(); i++)
         j[i == 0 ? "path_errors" : "spot_errors"] =
             TJson::parse(rfir::eval::toJson(ev.rows[i]));
     return rfir::common::dumpJson(j) + "\n";
 }
 
-void plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
-          const std::string& png) {
+/** path_map.png; returns its title. */
+std::string plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
+                 const std::string& png) {
     rfir::eval::TMapFigure fig;
     fig.title =
         std::string(cfg.odometryOnly ? "Odometry only" : "IR Monte Carlo localization") +
@@ -161,25 +163,31 @@ void plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
     const auto em = rfir::common::emitterEntries(cfg.map->emitters().emitters());
     fig.gtMap.insert(fig.gtMap.end(), em.begin(), em.end());
     rfir::eval::plotMapFigure(png, fig);
+    return fig.title;
 }
 }  // namespace
 
 std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
                          const std::string& commandLine) {
     // One set per run: staged beside --out-dir and renamed into place, so a
-    // stale errors.txt of a run with ground truth cannot outlive it.
-    rfir::common::COutputFolder out(cfg.outDir,
-                                    {"path.tum", "stats.json", "settings.ini",
-                                     "errors.txt", "path.png", "emitter_health.txt"},
-                                    "rfir-localize");
+    // stale errors.json of a run with ground truth cannot outlive it. The
+    // names are rfir-slam's where the files are the same.
+    rfir::common::COutputFolder out(
+        cfg.outDir,
+        {"path.tum", "stats.json", "settings.ini", "errors.json", "errors_spots.json",
+         "path_map.png", "error_time.png", "emitter_health.txt"},
+        "rfir-localize");
     const TEvals ev = evaluate(cfg, res);
     std::string table;
     if (!ev.rows.empty()) table = rfir::eval::formatErrorTable(ev.rows);
     rfir::common::saveTUM(out.file("path.tum"), res.path);
-    if (!table.empty())
-        rfir::common::writeFileAtomically(out.file("errors.txt"),
-                                          [&](std::ostream& o) { o << table; });
-    plot(cfg, res, ev, out.file("path.png"));
+    for (size_t i = 0; i < ev.rows.size(); i++)
+        rfir::common::writeFileAtomically(
+            out.file(i == 0 ? "errors.json" : "errors_spots.json"),
+            [&](std::ostream& o) { o << rfir::eval::toJson(ev.rows[i]) << "\n"; });
+    const std::string title = plot(cfg, res, ev, out.file("path_map.png"));
+    if (!ev.rows.empty() && ev.rows[0].robot)
+        rfir::eval::plotErrorsOverTime(out.file("error_time.png"), ev.rows[0], title);
     if (!cfg.odometryOnly) writeEmitterReport(cfg, res, out.file("emitter_health.txt"));
     const std::string stats = out.file("stats.json"), settings = out.file("settings.ini");
     const auto files = out.files();

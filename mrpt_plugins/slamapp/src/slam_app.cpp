@@ -41,11 +41,16 @@ std::ostream& logStream(const TAppArgs& a) {
     return a.quiet ? sink : std::cerr;
 }
 
-/** The INI with the --set edits written over it (in memory). */
+/** The INI with the --set edits written over it (in memory); a bad edit is
+ * a command-line error naming it (rfir::common::loadWithIniEdits). */
 rfir::slam::TSlamConfig loadConfig(const std::string& ini, const TAppArgs& a) {
-    auto f = rfir::common::readIniFile(ini);
-    rfir::common::applyIniOverrides(f, a.sets);
-    return rfir::slam::loadSlamConfig(f, a.method);
+    rfir::slam::TSlamConfig cfg;
+    rfir::common::loadWithIniEdits(a.sets, [&](const std::vector<std::string>& edits) {
+        auto f = rfir::common::readIniFile(ini);
+        rfir::common::applyIniOverrides(f, edits);
+        cfg = rfir::slam::loadSlamConfig(f, a.method);
+    });
+    return cfg;
 }
 
 struct TLoaded {

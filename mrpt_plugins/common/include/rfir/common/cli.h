@@ -1,7 +1,12 @@
 /* rfir: what every program's command line shares: one parse outcome (help and
- * version exit 0, any error exits 2 before any work), strictly parsed
- * numbers, stock INIs found by bare name, deprecated option spellings. */
+ * version exit 0, any error exits 2 before any work, no argument at all prints
+ * the usage), strictly parsed numbers and lists, stock INIs found by bare
+ * name, deprecated option spellings. Every program's TCLAP::CmdLine gives
+ * RFIR_VERSION (rfir/version.h) as its version. */
 #pragma once
+
+#include <rfir/common/usage_error.h>
+#include <rfir/version.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
@@ -21,9 +26,6 @@ inline constexpr const char* kRawlogClassesHelp =
     " (records of MRPT classes rfir does not check are refused unless listed in the "
     "environment variable RFIR_TRUST_MRPT_CLASSES: docs/hardening.md)";
 
-/** Exit code of a command-line error (unknown option, bad value, ...). */
-constexpr int kUsageExitCode = 2;
-
 /** What -q / --quiet means in every program. */
 constexpr const char* kQuietHelp =
     "quiet: nothing on stdout, no progress or summary on stderr (errors and warnings "
@@ -38,7 +40,8 @@ struct TOptionAlias {
 /** Parses `args` (args[0] is the program). Returns std::nullopt when the
  * program is to run; otherwise the exit code to return at once: 0 after
  * --help or --version was printed, kUsageExitCode after a parse error was
- * printed (naming the option). MRPT's TCLAP returns false in both cases. */
+ * printed (naming the option) or, when no argument at all was given, after
+ * the usage was printed on stderr. MRPT's TCLAP returns false in all cases. */
 std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, std::vector<std::string> args,
                                     const std::vector<TOptionAlias>& aliases = {});
 std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv,
@@ -83,26 +86,24 @@ std::string describeNumber(T lo, T hi) {
     return d + " in [" + str(lo) + ", " + str(hi) + "]";
 }
 
-/** parseNumber within [lo, hi], or std::invalid_argument "<what>: '<s>' is
- * not <describeNumber>". */
+/** parseNumber within [lo, hi], or CUsageError "<what>: '<s>' is not
+ * <describeNumber>". */
 template <typename T>
 T parseNumberOrThrow(const std::string& what, const std::string& s,
                      T lo = std::numeric_limits<T>::lowest(),
                      T hi = std::numeric_limits<T>::max()) {
     const auto v = parseNumber<T>(s);
     if (!v || *v < lo || *v > hi)
-        throw std::invalid_argument(what + ": '" + s + "' is not " +
-                                    describeNumber(lo, hi));
+        throw CUsageError(what + ": '" + s + "' is not " + describeNumber(lo, hi));
     return *v;
 }
 
-/** The numbers of a list separated by `sep` (' ' takes any run of blanks),
- * each by parseNumberOrThrow; `count` (if not 0) is how many there must be. */
+namespace detail {
+/** The numbers of `s` into `v`; an empty string, or why not (for messages). */
 template <typename T>
-std::vector<T> parseNumberList(const std::string& what, const std::string& s, char sep,
-                               size_t count = 0, T lo = std::numeric_limits<T>::lowest(),
-                               T hi = std::numeric_limits<T>::max()) {
-    std::vector<T> v;
+std::string numberList(const std::string& s, char sep, size_t count, T lo, T hi,
+                       std::vector<T>& v) {
+    v.clear();
     size_t i = 0;
     while (i <= s.size()) {
         if (sep == ' ') {
@@ -111,13 +112,31 @@ std::vector<T> parseNumberList(const std::string& what, const std::string& s, ch
         }
         size_t j = sep == ' ' ? s.find_first_of(" \t", i) : s.find(sep, i);
         if (j == std::string::npos) j = s.size();
-        v.push_back(parseNumberOrThrow<T>(what, s.substr(i, j - i), lo, hi));
+        const std::string item = s.substr(i, j - i);
+        const auto x = parseNumber<T>(item);
+        if (!x || *x < lo || *x > hi)
+            return "'" + item + "' is not " + describeNumber(lo, hi);
+        v.push_back(*x);
         i = j + 1;
     }
     if (v.empty() || (count && v.size() != count))
-        throw std::invalid_argument(what + ": expected " +
-                                    (count ? std::to_string(count) : "one or more") +
-                                    " number(s), got '" + s + "'");
+        return "expected " +
+               (count ? std::to_string(count) : std::string("one or more")) +
+               " number(s), got '" + s + "'";
+    return {};
+}
+}  // namespace detail
+
+/** The numbers of a list separated by `sep` (' ' takes any run of blanks),
+ * each by parseNumber within [lo, hi]; `count` (if not 0) is how many there
+ * must be. Throws CUsageError "<what>: why". */
+template <typename T>
+std::vector<T> parseNumberList(const std::string& what, const std::string& s, char sep,
+                               size_t count = 0, T lo = std::numeric_limits<T>::lowest(),
+                               T hi = std::numeric_limits<T>::max()) {
+    std::vector<T> v;
+    const std::string why = detail::numberList(s, sep, count, lo, hi, v);
+    if (!why.empty()) throw CUsageError(what + ": " + why);
     return v;
 }
 
@@ -154,13 +173,89 @@ class CNumberArg : public TCLAP::ValueArg<std::string> {
     T def_, value_, lo_, hi_;
 };
 
+/** A TCLAP option whose value is a list of numbers (parseNumberList), checked
+ * while the command line is parsed: "X Y PHI", "100,500", ... */
+template <typename T>
+class CNumberListArg : public TCLAP::ValueArg<std::string> {
+  public:
+    CNumberListArg(const std::string& flag, const std::string& name,
+                   const std::string& desc, bool req, const std::string& typeDesc,
+                   TCLAP::CmdLineInterface& cmd, char sep, size_t count = 0,
+                   T lo = std::numeric_limits<T>::lowest(),
+                   T hi = std::numeric_limits<T>::max())
+        : TCLAP::ValueArg<std::string>(flag, name, desc, req, "", typeDesc, cmd),
+          sep_(sep),
+          count_(count),
+          lo_(lo),
+          hi_(hi) {}
+
+    bool processArg(int* i, std::vector<std::string>& args) override {
+        if (!TCLAP::ValueArg<std::string>::processArg(i, args)) return false;
+        const std::string why =
+            detail::numberList(_value, sep_, count_, lo_, hi_, values_);
+        if (!why.empty()) throw TCLAP::ArgParseException(why, toString());
+        return true;
+    }
+
+    /** The numbers given (empty when the option was not given). */
+    const std::vector<T>& values() const { return values_; }
+
+  private:
+    char sep_;
+    size_t count_;
+    T lo_, hi_;
+    std::vector<T> values_;
+};
+
 /** Rewrites "OPT A B C" into "OPT 'A B C'" (TCLAP takes one token per value,
  * and negative numbers would look like options); a value already given as
- * one quoted token is kept as it is. Throws if fewer than n tokens follow. */
+ * one quoted token is kept as it is. Throws CUsageError if fewer than n
+ * tokens follow. */
 void foldOptionValues(std::vector<std::string>& args, const std::string& opt, size_t n);
 
 /** An INI given as a path, or a stock INI by bare name: "slam_ps.ini" or
- * "slam_ps" finds <stockConfigDir()>/slam_ps.ini. A name found nowhere is
- * returned unchanged, for the loader to report. */
+ * "slam_ps" finds <stockConfigDir()>/slam_ps.ini. std::nullopt when the name
+ * is no file and no stock INI. */
+std::optional<std::string> findConfigFile(const std::string& name);
+
+/** findConfigFile, or `name` unchanged (for a loader to report). */
 std::string resolveConfigFile(const std::string& name);
+
+/** The stock INIs whose names start with `prefix`, without ".ini": "slam_pf,
+ * slam_ps" (for messages). */
+std::string stockIniNames(const std::string& prefix);
+
+/** An INI option (--config): a path or a stock INI by bare name, found while
+ * the command line is parsed; a value that names neither is a parse error
+ * naming the option and the stock INIs whose names start with `stockPrefix`.
+ * getValue() is the file found. */
+class CConfigArg : public TCLAP::ValueArg<std::string> {
+  public:
+    CConfigArg(const std::string& flag, const std::string& name, const std::string& desc,
+               bool req, TCLAP::CmdLineInterface& cmd, std::string stockPrefix)
+        : TCLAP::ValueArg<std::string>(flag, name, desc, req, "", "INI", cmd),
+          prefix_(std::move(stockPrefix)) {}
+    bool processArg(int* i, std::vector<std::string>& args) override;
+
+  private:
+    std::string prefix_;
+};
+
+/** The subcommand of a program (rfir-ids encode|decode|...): the first
+ * argument that is not an option; a name not in `names` is a parse error
+ * listing them. An argument starting with '-' is never taken for it, so that
+ * an unknown option is reported as one. */
+class CSubcommandArg : public TCLAP::UnlabeledValueArg<std::string> {
+  public:
+    CSubcommandArg(const std::string& name, std::vector<std::string> names,
+                   TCLAP::CmdLineInterface& cmd);
+    bool processArg(int* i, std::vector<std::string>& args) override;
+
+  private:
+    std::vector<std::string> names_;
+};
+
+/** A folder option (--config-dir, ...) that must name an existing folder;
+ * throws CUsageError "<option>: no folder '<dir>'" otherwise. */
+void checkFolderOption(const std::string& option, const std::string& dir);
 }  // namespace rfir::common

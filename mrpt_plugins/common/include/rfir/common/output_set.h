@@ -59,7 +59,7 @@ class COutputFiles {
  * command line (from /proc/self/cmdline), and the MD5 of a file's bytes. */
 std::string processCommandLine();
 std::string fileMD5(const std::string& path);
-/** The project's version (CMake's PROJECT_VERSION). */
+/** The project's version, RFIR_VERSION (rfir/version.h). */
 std::string rfirVersion();
 /** A JSON object {"command": ..., "version": ..., "seed": N, "ini": path,
  * "ini_md5": ..., "files": [...]} for stats.json. */

@@ -16,7 +16,7 @@ struct TRunSpec {
     std::string label, path, map;
 };
 
-/** Parses `LABEL=PATH[,MAP]`; throws std::invalid_argument naming the text. */
+/** Parses `LABEL=PATH[,MAP]`; throws rfir::common::CUsageError naming the text. */
 TRunSpec parseRunSpec(const std::string& s);
 
 /** Fills m.passedOver from the rawlog's sensor geometry; false when the rawlog

@@ -17,7 +17,7 @@ struct TEvalArgs {
 };
 
 /** Option combinations the command-line parser cannot express; throws
- * std::invalid_argument naming the options. */
+ * rfir::common::CUsageError naming the options. */
 void validateEvalArgs(const TEvalArgs& a);
 
 /** Scores the run(s), writes the figures and the JSON file, prints the table

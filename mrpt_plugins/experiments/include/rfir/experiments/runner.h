@@ -56,12 +56,13 @@ struct TSetup {
 
 /** The --set edits split between the simulation INIs and the SLAM INIs (by
  * section; "sim:" or "slam:" for [kidnap], in both). Throws
- * std::invalid_argument naming a malformed or unknown edit. */
+ * rfir::common::CUsageError naming a malformed or unknown edit. */
 TSetup makeSetup(const std::string& configDir, const std::vector<std::string>& sets);
 
 /** Loads every INI the rows read, with their edits and the user's, so that an
  * unknown key or a bad value fails before any run. Throws
- * std::invalid_argument "FILE: [section] key: why". */
+ * rfir::common::CUsageError "--set EDIT: [section] key: why" when a user's
+ * edit is to blame, else the INI's own error "FILE: [section] key: why". */
 void checkConfigs(const TSetup& setup, const std::vector<TRow>& rows);
 
 /** Loads the sub-run's sim INI with the overrides of the sub-run, the point

@@ -44,7 +44,8 @@ struct TSession {
  * INI (by section), into s.simSets and s.locSets; then every simulation INI
  * the experiments read and ir_localize.ini are loaded with them, so that a
  * malformed edit, an unknown section or key or a bad value fails before any
- * run. Throws std::invalid_argument naming the edit or "FILE: [section] key". */
+ * run. Throws rfir::common::CUsageError naming the edit when an edit is to
+ * blame, else the INI's own error "FILE: [section] key: why". */
 void setEdits(TSession& s, const std::vector<std::string>& sets);
 
 /** One line on stderr naming the experiment being run (verbose sessions). */
@@ -52,7 +53,7 @@ void progress(const TSession& s, const std::string& what);
 
 /** Simulates (once per spec and seed: cached in workDir), localizes through
  * the same code as rfir-localize, scores. `outDir` non-empty: also writes the
- * rfir-localize outputs there (path.tum, path.png, ...). */
+ * rfir-localize outputs there (path.tum, path_map.png, ...). */
 TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
                    const std::string& outDir = {});
 

@@ -14,6 +14,9 @@ struct TConfig {
     std::string rawlogPath;
     std::string emitterPath;  //!< --emitters, else the INI's emitter_file
     std::string outDir;
+    /** The ground-truth path (TUM) the run is scored against: --gt-path, else
+     * <stem>.gt.tum beside the rawlog when it exists; empty: none. */
+    std::string gtPath;
     uint64_t seed = 1;
     bool odometryOnly = false;
     bool quiet = false;

@@ -6,10 +6,12 @@
 #include <string>
 
 namespace rfir::localize {
-/** Writes OUT/path.tum, stats.json, settings.ini, path.png and, when
- * `<stem>.gt.tum` lies beside the rawlog, errors.txt (also at the marked spots
+/** Writes OUT/path.tum, stats.json, settings.ini, path_map.png,
+ * emitter_health.txt and, with a ground-truth path (cfg.gtPath), errors.json
+ * and error_time.png as rfir-slam's (and errors_spots.json at the marked spots
  * of `<stem>.spots.tum` when present). Each file is written whole or not at
- * all. Returns the error table (empty without ground truth). */
+ * all; the set replaces the folder's earlier one. Returns the error table
+ * (empty without ground truth). */
 std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
                          const std::string& commandLine);
 

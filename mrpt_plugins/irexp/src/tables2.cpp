@@ -3,11 +3,11 @@
 #include <rfir/irexp/tables.h>
 
 #include <rfir/eval/plot.h>
+#include <rfir/models/random.h>
 #include <rfir/obs/ir_decoder.h>
 
 #include <cmath>
 #include <iostream>
-#include <random>
 #include <sstream>
 
 namespace rfir::irexp {
@@ -250,9 +250,11 @@ std::string expRawAndDecoder(const TSession& s, const TOptions& opt) {
           "| SNR (V/sigma) | dB | wrong code sets | mean abs. V error [V] | no-emitter "
           "windows "
           "with a code |\n|---|---|---|---|---|\n";
-    std::mt19937 g(1);
-    std::uniform_real_distribution<double> U(0, 1);
-    std::normal_distribution<double> N(0, 1);
+    // The run's seed (--seed), drawn by the project's generator: the same
+    // numbers with any standard library.
+    rfir::models::TRandom g(s.firstSeed);
+    const auto U = [&g] { return g.drawUniform01(); };
+    const auto N = [&g] { return g.drawGaussian1D_normalized(); };
     for (double snr : {10.0, 3.0, 2.0, 1.0, 0.8, 0.6}) {
         int wrong = 0, ok = 0, fa = 0;
         double ve = 0;
@@ -260,11 +262,10 @@ std::string expRawAndDecoder(const TSession& s, const TOptions& opt) {
             std::vector<uint8_t> codes;
             std::vector<double> ph;
             for (int c = 1; c <= 9; c++)
-                if (mask & (1 << (c - 1)))
-                    codes.push_back(uint8_t(c)), ph.push_back(U(g));
+                if (mask & (1 << (c - 1))) codes.push_back(uint8_t(c)), ph.push_back(U());
             auto x =
-                rfir::ir::synthesizeIRWindow(codes, 1.0, 0.2 + 1.8 * U(g), 8000, 800, ph);
-            for (auto& v : x) v += float(N(g) / snr);
+                rfir::ir::synthesizeIRWindow(codes, 1.0, 0.2 + 1.8 * U(), 8000, 800, ph);
+            for (auto& v : x) v += float(N() / snr);
             const auto d = rfir::ir::decodeIRWindow(x, 8000);
             if (d.codes != codes)
                 wrong++;
@@ -272,8 +273,8 @@ std::string expRawAndDecoder(const TSession& s, const TOptions& opt) {
                 ve += std::abs(d.volts - 1.0), ok++;
         }
         for (int w = 0; w < 500; w++) {
-            std::vector<float> x(800, float(0.2 + 1.8 * U(g)));
-            for (auto& v : x) v += float(N(g) / snr);
+            std::vector<float> x(800, float(0.2 + 1.8 * U()));
+            for (auto& v : x) v += float(N() / snr);
             fa += !rfir::ir::decodeIRWindow(x, 8000).codes.empty();
         }
         md << "| " << fmt(snr, 1) << " | " << fmt(20 * std::log10(snr), 1) << " | "

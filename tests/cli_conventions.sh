@@ -183,6 +183,8 @@ value_checks() {
     "--kind|rfir-eval --path $GT --gt-path $GT --kind foo"
     "--gt-path|rfir-eval --path $GT"
     "--run|rfir-eval --run foo --gt-path $GT"
+    "--path-format|rfir-eval --path $GT --gt-path $GT --path-format foo"
+    "--start|rfir-eval --path $GT --gt-path $GT --path-format mrpt"
     "--rows|rfir-experiments --quick --rows nosuch --out-dir out"
     "--config-dir|rfir-experiments --quick --rows t31_16 --out-dir out --config-dir nosuch"
     "--only|rfir-ir-experiments --quick --only nosuch --out-dir out"

@@ -1,6 +1,6 @@
 # Evaluation metrics, tables/JSON, PNG figures, and the rfir-eval program.
 rfir_add_test(test_eval
-  SOURCES test_eval_metrics.cpp test_eval_plot.cpp test_eval_cli.cpp
+  SOURCES test_eval_metrics.cpp test_eval_plot.cpp test_eval_cli.cpp test_eval_formats.cpp
     test_eval_trajectory.cpp test_eval_scene.cpp
   LIBS rfir_eval)
 add_dependencies(test_eval rfir-eval)

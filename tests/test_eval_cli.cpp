@@ -1,10 +1,14 @@
-// The rfir-eval program: outputs, rawlog geometry, malformed inputs.
+// The rfir-eval program: outputs, rawlog geometry, malformed inputs, MRPT's
+// rbpf-slam path.
 #include <rfir/common/rawlog_io.h>
 #include <rfir/eval/metrics.h>
+
+#include "test_eval_mrpt.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -193,4 +197,51 @@ TEST_F(EvalCli, RawlogGivesPassedOverAndDeadReckoning) {
     EXPECT_EQ(info.readers[0].id, "R1");
     ASSERT_EQ(info.odometry.size(), 11u);
     EXPECT_NEAR(info.odometry.back().pose.x(), 1.1, 1e-9);
+}
+
+// A file that is not TUM is refused, saying what it looks like; rbpf-slam's
+// path is read with --path-format mrpt and the log's start pose (--start, or
+// a --run's "mrpt:"), equal to the path it was written from.
+TEST_F(EvalCli, MrptPathFormat) {
+    const auto truth = rfir_test::curve(150);
+    const CPose2D start(2.5, -1.25, 2.6);
+    const std::string gt = (dir / "truth.tum").string();
+    const std::string est = (dir / "log_estimated_path.txt").string();
+    rfir::common::saveTUM(gt, truth);
+    rfir_test::writeRbpfSlam(est, truth, start);
+    for (const std::string& args :
+         {"--path " + est + " --gt-path " + gt, "--path " + gt + " --gt-path " + est,
+          "--run rbpf=" + est + " --gt-path " + gt}) {
+        const auto r = run(args);
+        EXPECT_EQ(r.rc, 1) << args;  // the file's error
+        EXPECT_NE(r.err.find(est + ": not a TUM path"), std::string::npos) << r.err;
+        EXPECT_NE(
+            r.err.find("it looks like MRPT rbpf-slam's log_estimated_path.txt (step "
+                       "x y z yaw pitch roll t): use --path-format mrpt"),
+            std::string::npos)
+            << r.err;
+    }
+    // Command-line errors: no start pose for rbpf-slam's frame, an unknown format.
+    auto r = run("--path " + est + " --gt-path " + gt + " --path-format mrpt");
+    EXPECT_EQ(r.rc, 2);
+    EXPECT_NE(r.err.find("--start"), std::string::npos) << r.err;
+    r = run("--path " + est + " --gt-path " + gt + " --path-format rbpf");
+    EXPECT_EQ(r.rc, 2);
+    EXPECT_NE(r.err.find("--path-format"), std::string::npos) << r.err;
+
+    const std::string at = " --start 2.5 -1.25 2.6";
+    r = run("--path " + est + " --gt-path " + gt + " --path-format mrpt --json-only" +
+            at);
+    ASSERT_EQ(r.rc, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out).at("robot");
+    EXPECT_EQ(j.at("poses"), truth.size());
+    EXPECT_LT(j.at("max_dist").get<double>(), 1e-5);  // the file's 6 decimals
+    EXPECT_LT(j.at("max_dtheta").get<double>(), 1e-5);
+    r = run("--run rbpf-slam=mrpt:" + est + " --run truth=" + gt + " --gt-path " + gt +
+            " --json-only" + at);
+    ASSERT_EQ(r.rc, 0) << r.err;
+    const auto runs = nlohmann::json::parse(r.out).at("runs");
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0].at("label"), "rbpf-slam");
+    EXPECT_LT(runs[0].at("robot").at("max_dist").get<double>(), 1e-5);
 }

@@ -1,7 +1,8 @@
 // MRPT's own rbpf-slam and pf-localization (the installed programs, with the
 // plugin preloaded) run to the end on a bundled RFID rawlog with the stock
 // INIs of config_ini/, and their estimated paths are scored against the
-// ground truth here. Skipped when the programs are not installed.
+// ground truth here, and by rfir-eval --path-format mrpt with the same
+// numbers. Skipped when the programs are not installed.
 #include <rfir/common/rawlog_io.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/eval/metrics.h>
@@ -15,6 +16,9 @@
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/poses/CPoint2D.h>
 #include <mrpt/serialization/CArchive.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -83,6 +87,16 @@ std::vector<double> instantTimes(mrpt::poses::CPose2D& start) {
     return t;
 }
 
+/** rfir-eval's JSON line for `args` (with --json-only), run in `dir`. */
+nlohmann::json rfirEval(const TmpDir& dir, const std::string& args) {
+    const std::string out = dir / "eval.json", err = dir / "eval.err";
+    const std::string cmd = std::string(RFIR_BINARY_DIR) + "/bin/rfir-eval --json-only " +
+                            args + " > " + out + " 2> " + err;
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << tail(err);
+    std::ifstream in(out);
+    return nlohmann::json::parse(in, nullptr, false);
+}
+
 rfir::eval::TErrorStats score(const TPath2D& est) {
     const auto e = rfir::eval::computeRobotErrors(est, rfir::common::loadTUM(kTruth));
     EXPECT_EQ(e.skipped, 0u);
@@ -149,6 +163,29 @@ TEST(MrptApps, RbpfSlamWithTheTagMap) {
               << " mm\n";
     EXPECT_GT(m.second, 80u);  // of the 92 passed over
     EXPECT_LT(m.first, 0.2);
+
+    // rfir-eval reads the same files with --path-format / --map-format mrpt
+    // (composed with the rawlog header's start pose): the same numbers.
+    const std::string out = d / "rbpf_slam_out";
+    const auto j = rfirEval(
+        d, "--path-format mrpt --map-format mrpt --rawlog " + kRawlog + " --path " + out +
+               "/log_estimated_path.txt --map " + out +
+               "/finalMap_rfir__maps__CRFIDTagParticleMap_00_tags.txt --gt-path " +
+               kTruth + " --gt-map " + kSrc +
+               "/datasets/rfid_60mm_16tags_loop.gt_map.txt");
+    ASSERT_TRUE(j.is_object()) << j;
+    EXPECT_EQ(j.at("robot").at("poses"), est.size());
+    EXPECT_NEAR(j.at("robot").at("mean_dist").get<double>(), s.mean_dist, 1e-9);
+    EXPECT_NEAR(j.at("robot").at("max_dist").get<double>(), s.max_dist, 1e-9);
+    EXPECT_EQ(j.at("tags").at("count"), m.second);
+    EXPECT_NEAR(j.at("tags").at("mean_dist").get<double>(), m.first, 1e-9);
+    // As TUM, the file is refused, saying what it is.
+    const std::string cmd = std::string(RFIR_BINARY_DIR) + "/bin/rfir-eval --path " +
+                            out + "/log_estimated_path.txt --gt-path " + kTruth + " 2> " +
+                            (d / "refused.err") + " > /dev/null";
+    const int st = std::system(cmd.c_str());
+    EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 1);
+    EXPECT_NE(tail(d / "refused.err").find("use --path-format mrpt"), std::string::npos);
 }
 
 TEST(MrptApps, PfLocalizationAgainstThePriorTagMap) {
@@ -187,6 +224,14 @@ TEST(MrptApps, PfLocalizationAgainstThePriorTagMap) {
               << 1000 * s.max_dist << " mm over " << s.count << " poses\n";
     EXPECT_LT(s.mean_dist, 0.05);
     EXPECT_LT(s.max_dist, 0.15);
+    // rfir-eval reads the output folder (the rawlog gives the steps' times).
+    const auto j =
+        rfirEval(d, "--path-format mrpt --rawlog " + kRawlog + " --path " +
+                        (d / "pf_localization_out_000_0000300") + " --gt-path " + kTruth);
+    ASSERT_TRUE(j.is_object()) << j;
+    EXPECT_EQ(j.at("robot").at("poses"), est.size());
+    EXPECT_NEAR(j.at("robot").at("mean_dist").get<double>(), s.mean_dist, 1e-9);
+    EXPECT_NEAR(j.at("robot").at("max_dist").get<double>(), s.max_dist, 1e-9);
 }
 
 /** A CMultiMetricMap with the tag map, as pf-localization builds it. */

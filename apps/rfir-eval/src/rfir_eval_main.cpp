@@ -1,6 +1,7 @@
 /* rfir-eval: errors of an estimated path and map against the ground truth, in
- * the seeds' table layout (mm, rad) and as one JSON line; optional PNG figure
- * (the run is rfir_evalapp). */
+ * the papers' table layout (mm, rad) and as one JSON line; optional PNG figure
+ * (the run is rfir_evalapp). Reads rfir's files and what MRPT's rbpf-slam and
+ * pf-localization write. */
 #include <rfir/common/cli.h>
 #include <rfir/evalapp/eval_app.h>
 
@@ -10,90 +11,153 @@
 
 namespace {
 using rfir::evalapp::TEvalArgs;
+using TCLAP::SwitchArg;
+using TCLAP::ValueArg;
+using TStrArg = TCLAP::ValueArg<std::string>;
 
 /** Thrown to end the program with a given code, output already printed. */
 struct TExit {
     int code;
 };
 
-/** Ends the program after --help / --version (0) or a parse error. */
-void parseOrExit(TCLAP::CmdLine& cmd, int argc, char** argv) {
-    if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
-        throw TExit{*code};
-}
+const char* kDescription =
+    "Compares an estimated robot path and landmark map with the ground truth: mean "
+    "and max of |dx|, |dy|, |dtheta| and distance (the papers' tables), mapped vs "
+    "passed-over tags. Prints a table (mm, rad) and one JSON line (m, rad). Reads "
+    "rfir's files (TUM paths, rfir's map records) and, with --path-format mrpt / "
+    "--map-format mrpt, what MRPT's rbpf-slam and pf-localization write "
+    "(docs/mrpt-apps.md).";
+
+/** The command line; its fields are the options. */
+struct TOptions {
+    TCLAP::CmdLine cmd{kDescription, ' ', RFIR_VERSION};
+    TStrArg path{"",
+                 "path",
+                 "estimated robot path: TUM (a file that is not is refused, saying what "
+                 "it looks like), or with --path-format mrpt rbpf-slam's "
+                 "log_estimated_path.txt or pf-localization's output folder",
+                 false,
+                 "",
+                 "EST",
+                 cmd};
+    std::vector<std::string> pathFormats{"tum", "mrpt"};
+    TCLAP::ValuesConstraint<std::string> pathFormatNames{pathFormats};
+    TStrArg pathFormat{"",
+                       "path-format",
+                       "how --path (and --run paths without their own) is written: tum, "
+                       "or mrpt (rbpf-slam's path composed with the log's start pose: "
+                       "needs --rawlog or --start; pf-localization's folder: needs "
+                       "--rawlog)",
+                       false,
+                       "tum",
+                       &pathFormatNames,
+                       cmd};
+    TStrArg gtPath{"", "gt-path", "ground-truth path (TUM)", false, "", "GT.tum", cmd};
+    TStrArg map{"",        "map", "estimated map (tag/landmark records)", false, "",
+                "EST_MAP", cmd};
+    std::vector<std::string> mapFormats{"rfir", "mrpt"};
+    TCLAP::ValuesConstraint<std::string> mapFormatNames{mapFormats};
+    TStrArg mapFormat{
+        "",
+        "map-format",
+        "how --map (and --run maps without their own) is written: rfir, or "
+        "mrpt (a map rbpf-slam saved: CBeaconMap's or CLandmarksMap's text, "
+        "or rfir's tag map's, composed with the log's start pose)",
+        false,
+        "rfir",
+        &mapFormatNames,
+        cmd};
+    TStrArg gtMap{"", "gt-map", "ground-truth map", false, "", "GT_MAP", cmd};
+    std::vector<std::string> kinds{"tag", "landmark"};
+    TCLAP::ValuesConstraint<std::string> kindNames{kinds};
+    TStrArg kind{
+        "",    "kind", "map records to evaluate (default: those of the estimated map)",
+        false, "",     &kindNames,
+        cmd};
+    TStrArg rawlog{"",
+                   "rawlog",
+                   std::string("the rawlog of the run: reader / sensor geometry for the "
+                               "passed-over count, odometry for the dead-reckoning row, "
+                               "the start pose and instants for MRPT's outputs") +
+                       rfir::common::kRawlogClassesHelp,
+                   false,
+                   "",
+                   "FILE",
+                   cmd};
+    rfir::common::CNumberListArg<double> start{
+        "",    "start",   "the robot's start pose X Y PHI (default: the rawlog header's)",
+        false, "X Y PHI", cmd,
+        ' ',   3};
+    SwitchArg atGt{"", "at-gt-times",
+                   "pair each ground-truth pose with the estimate interpolated at its "
+                   "time (sparse truth, e.g. the IR spots), instead of each estimated "
+                   "pose with the interpolated truth",
+                   cmd};
+    SwitchArg noOdom{"", "no-odometry", "no dead-reckoning row", cmd};
+    TStrArg label{"",     "label", "method name in the table and JSON", false, "estimate",
+                  "NAME", cmd};
+    TStrArg plot{"",        "plot", "write the path-and-map figure (PNG)", false, "",
+                 "OUT.png", cmd};
+    TStrArg errorPlot{
+        "",    "error-plot", "write the robot's position error vs time (PNG)",
+        false, "",           "OUT.png",
+        cmd};
+    TStrArg title{"",     "title", "figure title (default: the label)", false, "",
+                  "TEXT", cmd};
+    rfir::common::CNumberArg<int> segments{
+        "",
+        "segments",
+        "also give the robot's mean error in N equal windows of the ground truth's time "
+        "span (e.g. the laps of a loop)",
+        false,
+        0,
+        "N",
+        cmd,
+        0,
+        1000000};
+    SwitchArg ids{"", "ids", "write landmark IDs on the figure", cmd};
+    TStrArg jsonFile{"",    "json-file", "also write the JSON line to FILE (atomically)",
+                     false, "",          "FILE",
+                     cmd};
+    SwitchArg jsonOnly{"", "json-only", "print only the JSON line", cmd};
+    SwitchArg quiet{"q", "quiet", rfir::common::kQuietHelp, cmd};
+    TCLAP::MultiArg<std::string> runs{
+        "",
+        "run",
+        "a run to compare with the others (repeat it): its label, path and optional "
+        "map; 'mrpt:' before the path: an MRPT app's path and map (as --path-format "
+        "mrpt --map-format mrpt); one table, one JSON line {\"runs\": [...]}, and --plot "
+        "draws every path",
+        false,
+        "LABEL=[mrpt:]EST[,MAP]",
+        cmd};
+};
 
 TEvalArgs parse(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
-        "Compares an estimated robot path (TUM) and landmark map with the ground truth: "
-        "mean and max of |dx|, |dy|, |dtheta| and distance (the seeds' tables), mapped "
-        "vs passed-over tags. Prints a table (mm, rad) and one JSON line (m, rad).",
-        ' ', RFIR_VERSION);
-    TCLAP::ValueArg<std::string> path("", "path", "estimated robot path (TUM)", false, "",
-                                      "EST.tum", cmd);
-    TCLAP::ValueArg<std::string> gtPath("", "gt-path", "ground-truth path (TUM)", false,
-                                        "", "GT.tum", cmd);
-    TCLAP::ValueArg<std::string> map("", "map", "estimated map (tag/landmark records)",
-                                     false, "", "EST_MAP", cmd);
-    TCLAP::ValueArg<std::string> gtMap("", "gt-map", "ground-truth map", false, "",
-                                       "GT_MAP", cmd);
-    std::vector<std::string> kinds = {"tag", "landmark"};
-    TCLAP::ValuesConstraint<std::string> kindNames(kinds);
-    TCLAP::ValueArg<std::string> kind("", "kind",
-                                      "map records to evaluate (default: those of the "
-                                      "estimated map)",
-                                      false, "", &kindNames, cmd);
-    TCLAP::ValueArg<std::string> rawlog(
-        "", "rawlog",
-        std::string("the rawlog of the run: reader / sensor geometry for the "
-                    "passed-over count, odometry for the dead-reckoning row") +
-            rfir::common::kRawlogClassesHelp,
-        false, "", "FILE", cmd);
-    TCLAP::SwitchArg atGt("", "at-gt-times",
-                          "pair each ground-truth pose with the estimate interpolated "
-                          "at its time (sparse truth, e.g. the IR spots), instead of "
-                          "each estimated pose with the interpolated truth",
-                          cmd);
-    TCLAP::SwitchArg noOdom("", "no-odometry", "no dead-reckoning row", cmd);
-    TCLAP::ValueArg<std::string> label("", "label", "method name in the table and JSON",
-                                       false, "estimate", "NAME", cmd);
-    TCLAP::ValueArg<std::string> plot("", "plot", "write the path-and-map figure (PNG)",
-                                      false, "", "OUT.png", cmd);
-    TCLAP::ValueArg<std::string> errorPlot(
-        "", "error-plot", "write the robot's position error vs time (PNG)", false, "",
-        "OUT.png", cmd);
-    TCLAP::ValueArg<std::string> title("", "title", "figure title (default: the label)",
-                                       false, "", "TEXT", cmd);
-    rfir::common::CNumberArg<int> segments(
-        "", "segments",
-        "also give the robot's mean error in N equal windows of the ground truth's "
-        "time span (e.g. the laps of a loop)",
-        false, 0, "N", cmd, 0, 1000000);
-    TCLAP::SwitchArg ids("", "ids", "write landmark IDs on the figure", cmd);
-    TCLAP::ValueArg<std::string> jsonFile("", "json-file",
-                                          "also write the JSON line to "
-                                          "FILE (atomically)",
-                                          false, "", "FILE", cmd);
-    TCLAP::SwitchArg jsonOnly("", "json-only", "print only the JSON line", cmd);
-    TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
-    TCLAP::MultiArg<std::string> runs(
-        "", "run",
-        "a run to compare with the others (repeat it): its label, path and "
-        "optional map; one table, one JSON line {\"runs\": [...]}, and --plot "
-        "draws every path",
-        false, "LABEL=EST.tum[,MAP]", cmd);
-    parseOrExit(cmd, argc, argv);
+    TOptions o;
+    std::vector<std::string> args(argv, argv + argc);
+    rfir::common::foldOptionValues(args, "--start", 3);
+    if (const auto code = rfir::common::parseCommandLine(o.cmd, args)) throw TExit{*code};
     TEvalArgs a;
-    a.path = path.getValue(), a.gtPath = gtPath.getValue(), a.map = map.getValue();
-    a.gtMap = gtMap.getValue(), a.rawlog = rawlog.getValue(), a.label = label.getValue();
-    a.plot = plot.getValue(), a.title = title.getValue(),
-    a.jsonFile = jsonFile.getValue();
-    a.kind = kind.getValue(), a.jsonOnly = jsonOnly.getValue();
-    a.noOdometry = noOdom.getValue(), a.ids = ids.getValue();
-    a.atGtTimes = atGt.getValue();
-    a.errorPlot = errorPlot.getValue();
-    a.segments = segments.getValue();
-    a.quiet = quiet.getValue();
-    for (const auto& r : runs.getValue()) a.runs.push_back(rfir::eval::parseRunSpec(r));
+    a.path = o.path.getValue(), a.gtPath = o.gtPath.getValue(), a.map = o.map.getValue();
+    a.gtMap = o.gtMap.getValue(), a.rawlog = o.rawlog.getValue();
+    a.label = o.label.getValue(), a.plot = o.plot.getValue(),
+    a.title = o.title.getValue();
+    a.jsonFile = o.jsonFile.getValue();
+    a.kind = o.kind.getValue(), a.jsonOnly = o.jsonOnly.getValue();
+    a.noOdometry = o.noOdom.getValue(), a.ids = o.ids.getValue();
+    a.atGtTimes = o.atGt.getValue();
+    a.errorPlot = o.errorPlot.getValue();
+    a.segments = o.segments.getValue();
+    a.quiet = o.quiet.getValue();
+    using rfir::eval::parseInputFormat;
+    a.pathFormat = parseInputFormat("--path-format", o.pathFormat.getValue());
+    a.mapFormat = parseInputFormat("--map-format", o.mapFormat.getValue());
+    if (o.start.isSet()) {
+        const auto& v = o.start.values();
+        a.start = mrpt::poses::CPose2D(v[0], v[1], v[2]);
+    }
+    for (const auto& r : o.runs.getValue()) a.runs.push_back(rfir::eval::parseRunSpec(r));
     rfir::evalapp::validateEvalArgs(a);
     return a;
 }

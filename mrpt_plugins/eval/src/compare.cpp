@@ -13,10 +13,14 @@ TRunSpec parseRunSpec(const std::string& s) {
     const auto eq = s.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
         throw rfir::common::CUsageError(
-            "--run '" + s + "': expected LABEL=PATH.tum or LABEL=PATH.tum,MAP");
+            "--run '" + s + "': expected LABEL=PATH[,MAP] or LABEL=mrpt:PATH[,MAP]");
     TRunSpec r;
     r.label = s.substr(0, eq);
-    const std::string rest = s.substr(eq + 1);
+    std::string rest = s.substr(eq + 1);
+    if (rest.rfind("mrpt:", 0) == 0) {  // an MRPT app's path and map
+        r.format = InputFormat::Mrpt;
+        rest = rest.substr(5);
+    }
     const auto comma = rest.find(',');
     r.path = rest.substr(0, comma);
     if (comma != std::string::npos) r.map = rest.substr(comma + 1);
@@ -51,7 +55,7 @@ TEvalResult scoreRun(const TRunSpec& s, const TCompareInput& in,
                      rfir::common::TPath2D& path, rfir::common::TMapFile& map) {
     TEvalResult r;
     r.label = s.label;
-    path = rfir::common::loadTUM(s.path);
+    path = loadPath(s.path, s.format.value_or(in.pathFormat), in.frame);
     if (path.empty()) throw std::runtime_error(s.path + ": the path has no pose");
     if (in.assoc == Association::AtTruthTimes) checkPath(path, s.path);
     try {
@@ -62,7 +66,7 @@ TEvalResult scoreRun(const TRunSpec& s, const TCompareInput& in,
     if (!s.map.empty()) {
         if (!in.gtMap)
             throw std::runtime_error("--run " + s.label + ": a map needs --gt-map");
-        map = rfir::common::loadMapFile(s.map);
+        map = loadMap(s.map, s.format.value_or(in.mapFormat), in.frame);
         r.map = computeMapErrors(map, *in.gtMap);
         if (in.rawlog) addPassedOver(*r.map, map, *in.gtMap, in.gt, *in.rawlog);
     }

@@ -11,6 +11,7 @@ CRawlogInfoBuilder::CRawlogInfoBuilder(const rfir::obs::CObservationLogHeader& h
 
 void CRawlogInfoBuilder::add(const rfir::common::TRawlogStep& st) {
     info_.steps++;
+    info_.instantTimes.push_back(st.t);
     if (st.odometry) absolute_.push_back({st.t, *st.odometry});
     if (st.odometryIncrement) {
         acc_ = acc_ + *st.odometryIncrement;
@@ -33,7 +34,9 @@ TRawlogInfo readRawlogInfo(const std::string& rawlogPath) {
     CRawlogInfoBuilder b(rd.header());
     rfir::common::TRawlogStep st;
     while (rd.next(st)) b.add(st);
-    return b.finish();
+    TRawlogInfo info = b.finish();
+    info.hasHeader = rd.hasHeader();
+    return info;
 }
 
 }  // namespace rfir::eval

@@ -10,6 +10,8 @@
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -17,7 +19,39 @@ namespace rfir::evalapp {
 using namespace rfir::eval;
 using rfir::common::TMapEntry;
 
+namespace {
+/** MRPT's outputs need the log's start pose (rbpf-slam's start at the origin)
+ * or its instants' times (pf-localization's particle files). */
+void validateMrptInputs(const TEvalArgs& a) {
+    using rfir::common::CUsageError;
+    const bool mrptPath =
+        (!a.path.empty() && a.pathFormat == InputFormat::Mrpt) ||
+        std::any_of(a.runs.begin(), a.runs.end(), [&](const TRunSpec& r) {
+            return r.format.value_or(a.pathFormat) == InputFormat::Mrpt;
+        });
+    const bool mrptMap =
+        (!a.map.empty() && a.mapFormat == InputFormat::Mrpt) ||
+        std::any_of(a.runs.begin(), a.runs.end(), [&](const TRunSpec& r) {
+            return !r.map.empty() && r.format.value_or(a.mapFormat) == InputFormat::Mrpt;
+        });
+    if ((mrptPath || mrptMap) && a.rawlog.empty() && !a.start)
+        throw CUsageError(std::string(mrptPath ? "--path-format" : "--map-format") +
+                          " mrpt: MRPT's rbpf-slam starts at the origin: give --rawlog "
+                          "FILE (its header's start pose) or --start X Y PHI");
+    std::vector<std::string> paths;
+    if (a.pathFormat == InputFormat::Mrpt && !a.path.empty()) paths.push_back(a.path);
+    for (const auto& r : a.runs)
+        if (r.format.value_or(a.pathFormat) == InputFormat::Mrpt) paths.push_back(r.path);
+    for (const auto& p : paths)
+        if (std::filesystem::is_directory(p) && a.rawlog.empty())
+            throw CUsageError("--path-format mrpt: " + p +
+                              " is pf-localization's output folder: its particle files "
+                              "carry no time, give --rawlog FILE");
+}
+}  // namespace
+
 void validateEvalArgs(const TEvalArgs& a) {
+    validateMrptInputs(a);
     if (!a.runs.empty() && (!a.path.empty() || !a.map.empty() || a.segments > 0))
         throw rfir::common::CUsageError(
             "--run compares whole runs: give each path and map in its --run, "
@@ -72,13 +106,37 @@ void addSegments(TEvalResult& r, const rfir::common::TPath2D& gt, size_t n) {
     if (r.odometry) r.odometrySegments = segmentStats(r.odometry->perPose, t0, t1, n);
 }
 
+/** The rawlog's information, its start pose replaced by --start. */
+std::optional<TRawlogInfo> rawlogInfo(const TEvalArgs& a) {
+    if (a.rawlog.empty()) return std::nullopt;
+    TRawlogInfo info = readRawlogInfo(a.rawlog);
+    if (a.start) info.startPose = a.start;
+    return info;
+}
+
+/** What puts MRPT's outputs in the world frame: the start pose (--start, else
+ * the rawlog header's) and the rawlog's instants. */
+TMrptFrame mrptFrame(const TEvalArgs& a, const std::optional<TRawlogInfo>& info) {
+    TMrptFrame f;
+    f.start = a.start;
+    if (info) {
+        if (!f.start) f.start = info->startPose;
+        f.instantTimes = info->instantTimes;
+        f.firstInstantStep = info->hasHeader ? 1 : 0;
+    }
+    return f;
+}
+
 /** Several runs: one table, one JSON line, one figure. */
 int runCompare(const TEvalArgs& a, TMapFigure& fig) {
     TCompareInput in;
-    in.gt = rfir::common::loadTUM(a.gtPath);
+    in.gt = loadTumChecked(a.gtPath);
     checkPath(in.gt, a.gtPath);
     if (!a.gtMap.empty()) in.gtMap = rfir::common::loadMapFile(a.gtMap);
-    if (!a.rawlog.empty()) in.rawlog = readRawlogInfo(a.rawlog);
+    in.rawlog = rawlogInfo(a);
+    in.frame = mrptFrame(a, in.rawlog);
+    in.pathFormat = a.pathFormat;
+    in.mapFormat = a.mapFormat;
     in.deadReckoningRow = !a.noOdometry;
     in.assoc = a.atGtTimes ? Association::AtTruthTimes : Association::AtEstimateTimes;
     const auto rows = compareRuns(a.runs, in, fig);
@@ -110,20 +168,20 @@ int runEvalApp(const TEvalArgs& a) {
     const auto assoc =
         a.atGtTimes ? Association::AtTruthTimes : Association::AtEstimateTimes;
     if (!a.gtPath.empty()) {
-        gt = rfir::common::loadTUM(a.gtPath);
+        gt = loadTumChecked(a.gtPath);
         checkPath(gt, a.gtPath);
         fig.gtPath = gt;
     }
+    const std::optional<TRawlogInfo> info = rawlogInfo(a);
+    const TMrptFrame frame = mrptFrame(a, info);
     if (!a.path.empty()) {
-        const auto est = rfir::common::loadTUM(a.path);
+        const auto est = loadPath(a.path, a.pathFormat, frame);
         if (est.empty()) throw std::runtime_error(a.path + ": the path has no pose");
         if (a.atGtTimes) checkPath(est, a.path);  // interpolated: must be sorted
         r.robot = computeRobotErrors(est, gt, assoc);
         fig.estPath = est;
         fig.estPathLabel = a.label;
     }
-    std::optional<TRawlogInfo> info;
-    if (!a.rawlog.empty()) info = readRawlogInfo(a.rawlog);
     if (info && !gt.empty() && !a.noOdometry && !info->odometry.empty()) {
         // Dead reckoning from the known start pose (as the filters start), or
         // from the ground truth at the first odometry time.
@@ -134,7 +192,7 @@ int runEvalApp(const TEvalArgs& a) {
     if (a.segments > 0) addSegments(r, gt, size_t(a.segments));
     if (!a.gtMap.empty()) fig.gtMap = rfir::common::loadMapFile(a.gtMap);
     if (!a.map.empty()) {
-        fig.estMap = rfir::common::loadMapFile(a.map);
+        fig.estMap = loadMap(a.map, a.mapFormat, frame);
         std::optional<TMapEntry::Kind> k;
         if (!a.kind.empty())
             k = a.kind == "tag" ? TMapEntry::Kind::Tag : TMapEntry::Kind::Landmark;

@@ -2,6 +2,7 @@
  * one table, one JSON line, one figure with every path and the truth. */
 #pragma once
 
+#include <rfir/eval/input_formats.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
@@ -11,12 +12,16 @@
 #include <vector>
 
 namespace rfir::eval {
-/** One run to compare: `LABEL=PATH.tum[,MAP]`. */
+/** One run to compare: `LABEL=[mrpt:]PATH[,MAP]`. */
 struct TRunSpec {
     std::string label, path, map;
+    /** "mrpt:": the path and map are an MRPT app's; none: rfir-eval's
+     * --path-format and --map-format. */
+    std::optional<InputFormat> format;
 };
 
-/** Parses `LABEL=PATH[,MAP]`; throws rfir::common::CUsageError naming the text. */
+/** Parses `LABEL=[mrpt:]PATH[,MAP]`; throws rfir::common::CUsageError naming
+ * the text. */
 TRunSpec parseRunSpec(const std::string& s);
 
 /** Fills m.passedOver from the rawlog's sensor geometry; false when the rawlog
@@ -31,6 +36,10 @@ struct TCompareInput {
     std::optional<TRawlogInfo> rawlog;  //!< dead-reckoning row, passed-over counts
     bool deadReckoningRow = true;
     Association assoc = Association::AtEstimateTimes;
+    /** The runs' formats unless a run gives its own, and what puts MRPT's
+     * outputs in the world frame. */
+    InputFormat pathFormat = InputFormat::Rfir, mapFormat = InputFormat::Rfir;
+    TMrptFrame frame;
 };
 
 /** Scores every run (files read here; errors name the file) and, first, the

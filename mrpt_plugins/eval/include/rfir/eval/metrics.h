@@ -165,6 +165,11 @@ struct TRawlogInfo {
     /** The robot's world pose at the first odometry record (textlog `start`). */
     std::optional<mrpt::poses::CPose2D> startPose;
     size_t steps = 0;
+    /** The time of each sensing instant, in order. */
+    std::vector<double> instantTimes;
+    /** The rawlog has the rfir log header (its own action-observation pair
+     * before the first instant's, in the project's layout). */
+    bool hasHeader = false;
 };
 
 /** Builds a TRawlogInfo step by step, for a program that reads the rawlog's

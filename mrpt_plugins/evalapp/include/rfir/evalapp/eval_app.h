@@ -3,6 +3,10 @@
 
 #include <rfir/eval/compare.h>
 
+#include <mrpt/poses/CPose2D.h>
+
+#include <optional>
+
 #include <string>
 #include <vector>
 
@@ -14,6 +18,12 @@ struct TEvalArgs {
          quiet = false;
     int segments = 0;
     std::vector<rfir::eval::TRunSpec> runs;  //!< --run: several runs side by side
+    /** --path-format, --map-format: rfir's or an MRPT app's (also the --run
+     * runs' unless one says its own). */
+    rfir::eval::InputFormat pathFormat = rfir::eval::InputFormat::Rfir,
+                            mapFormat = rfir::eval::InputFormat::Rfir;
+    /** --start: the robot's start pose (default: the rawlog header's). */
+    std::optional<mrpt::poses::CPose2D> start;
 };
 
 /** Option combinations the command-line parser cannot express; throws

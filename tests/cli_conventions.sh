@@ -211,6 +211,16 @@ value_checks() {
     grep -qF "$root/bad_pf.ini: [slam] robot_particles" <<<"$last_err" ||
       fail "rfir-slam --config bad_pf.ini $extra: the message does not name the file: $last_err"
   done
+  # A ground truth that is not TUM (here MRPT rbpf-slam's path layout) is the
+  # file's error, found before the run (nothing written).
+  printf '0 0 0 0 0 0 0 1.0\n1 0.1 0 0 0.2 0 0 1.1\n2 0.2 0 0 0.3 0 0 1.2\n' >"$root/rbpf.txt"
+  run rfir-slam 1 --rawlog "$R" --out-dir out --method odometry --gt-path "$root/rbpf.txt"
+  grep -qF "log_estimated_path.txt" <<<"$last_err" ||
+    fail "rfir-slam --gt-path rbpf.txt: the message does not say what it looks like: $last_err"
+  run rfir-localize 1 --rawlog "$IR" --out-dir out --emitters "$DS/ir_loop_spots.gt_map.txt" \
+    --gt-path "$root/rbpf.txt"
+  grep -qF "not a TUM path" <<<"$last_err" ||
+    fail "rfir-localize --gt-path rbpf.txt: the message does not say it is not TUM: $last_err"
 }
 
 # quiet_run PROGRAM ARGS...: a short real run in a fresh directory: exit 0,

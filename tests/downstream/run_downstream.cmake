@@ -37,6 +37,18 @@ foreach(lib observations models io maps slam ir)
   expect_file(${prefix}/lib/librfir_${lib}.so.${soversion})
 endforeach()
 
+# One version number: the installed rfir/version.h and an installed
+# program's --version say the project's (the package's version file too:
+# the ctest version_everywhere).
+file(STRINGS ${prefix}/include/rfir/version.h version_line REGEX "define RFIR_VERSION ")
+if(NOT version_line STREQUAL "#define RFIR_VERSION \"${PROJECT_VERSION}\"")
+  message(FATAL_ERROR "installed rfir/version.h: '${version_line}', not ${PROJECT_VERSION}")
+endif()
+run("installed rfir-slam --version" ${prefix}/bin/rfir-slam --version)
+if(NOT run_output MATCHES "version: ${PROJECT_VERSION}\n")
+  message(FATAL_ERROR "installed rfir-slam --version: ${run_output}")
+endif()
+
 # Configure and build the downstream project against the prefix only.
 set(build ${WORK_DIR}/build)
 set(launcher)

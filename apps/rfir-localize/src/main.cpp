@@ -7,6 +7,7 @@
 
 #include <rfir/common/cli.h>
 #include <rfir/common/ini_override.h>
+#include <rfir/eval/input_formats.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/obs/registerAllClasses.h>
 
@@ -40,7 +41,7 @@ std::optional<mrpt::poses::CPose2D> groundTruthStart(rfir::localize::TConfig& cf
     const std::string gt = rfir::common::rawlogStem(cfg.rawlogPath) + ".gt.tum";
     if (cfg.gtPath.empty() && std::filesystem::exists(gt)) cfg.gtPath = gt;
     if (cfg.gtPath.empty()) return std::nullopt;
-    const auto p = rfir::common::loadTUM(cfg.gtPath);
+    const auto p = rfir::eval::loadTumChecked(cfg.gtPath);
     if (p.empty()) return std::nullopt;
     return p.front().pose;
 }

@@ -13,6 +13,7 @@
 #include <rfir/common/rawlog_io.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/eval/compare.h>
+#include <rfir/eval/input_formats.h>
 #include <rfir/eval/metrics.h>
 #include <rfir/eval/plot.h>
 #include <rfir/eval/report.h>
@@ -341,6 +342,9 @@ int runSlamApp(const TAppArgs& args) {
     rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
     cfg.seed = a.seed;
     findGroundTruth(a);
+    // The truth's files are refused (bad line, not TUM) before the run.
+    if (a.gtPath) rfir::eval::loadTumChecked(*a.gtPath);
+    if (a.gtMap) rfir::common::loadMapFile(*a.gtMap);
 
     logStream(a) << "rfir-slam: " << rfir::slam::methodName(cfg.slam.method) << " on "
                  << a.rawlog << " (config " << ini << ", seed " << a.seed << ")\n";

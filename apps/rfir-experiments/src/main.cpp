@@ -13,8 +13,10 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/filesystem.h>
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -226,6 +228,19 @@ std::optional<int> parseArgs(int argc, char** argv, TArgs& a) {
     return std::nullopt;
 }
 
+/** OUT/.runs.<pid> folders of earlier sweeps killed before their end. */
+void removeStaleScratch(const std::string& out) {
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(out, ec)) {
+        const std::string n = e.path().filename().string();
+        const auto pid =
+            rfir::common::parseNumber<int>(n.substr(std::min<size_t>(6, n.size())));
+        if (n.rfind(".runs.", 0) == 0 && pid && *pid > 0 && ::kill(*pid, 0) != 0 &&
+            errno == ESRCH)
+            std::filesystem::remove_all(e.path(), ec);
+    }
+}
+
 /** A scratch folder removed when it goes out of scope. */
 struct TScratch {
     std::string dir;
@@ -245,6 +260,7 @@ void runSweep(TArgs& a) {
     if (a.merge.empty()) {
         // The runs' folders go to a scratch folder in OUT, removed after.
         runsDir = scratch.dir = a.out + "/.runs." + std::to_string(::getpid());
+        removeStaleScratch(a.out);
         std::error_code ec;
         std::filesystem::remove_all(runsDir, ec);
         std::filesystem::create_directories(runsDir, ec);  // fail before the work

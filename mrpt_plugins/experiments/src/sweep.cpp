@@ -111,7 +111,7 @@ std::string shellLine(const std::vector<std::string>& args) {
         const bool plain =
             !a.empty() && a.find_first_not_of(
                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                              "0123456789_-+=/.,:@%^") == std::string::npos;
+                              "0123456789_-+=/.,:@%") == std::string::npos;
         std::string q = "'";
         for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
         line += (line.empty() ? "" : " ") + (plain ? a : q + "'");

@@ -7,6 +7,7 @@
 #   bash scripts/experiments.sh                      # every row, 8 seeds
 #   bash scripts/experiments.sh --quick --out-dir /tmp/x # tiny runs (a minute)
 #   bash scripts/experiments.sh --rows t41,t42 --seeds 3 --out-dir /tmp/y
+#   bash scripts/experiments.sh --jobs 2               # on 2 processes, same results
 #   bash scripts/experiments.sh --list               # the row ids
 # Environment: RFIR_BUILD_DIR (default ./build), RFIR_JOBS (build jobs).
 set -euo pipefail
@@ -21,7 +22,15 @@ cmake --build "$BUILD" -j"$JOBS" --target rfir-experiments
 
 args=("$@")
 has_out=0
-for a in "${args[@]}"; do [ "$a" = "--out-dir" ] || [ "$a" = "--out" ] && has_out=1; done
+for a in "${args[@]}"; do
+  [ "$a" = "--out-dir" ] || [ "$a" = "--out" ] && has_out=1
+  # Their commands would name this script's temporary copy of the INIs.
+  if [ "$a" = "--manifest" ] || [ "$a" = "--run" ]; then
+    echo "experiments.sh: $a: run $BUILD/bin/rfir-experiments itself" \
+      "(with --config-dir config_ini; docs/sweeps.md)" >&2
+    exit 2
+  fi
+done
 [ $has_out -eq 1 ] || args+=(--out-dir docs)
 # A snapshot of the INIs, as committed (uncommitted edits are not used; files
 # git does not track are taken as they are): results.md then matches a commit,

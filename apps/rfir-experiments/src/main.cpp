@@ -1,10 +1,11 @@
-/* rfir-experiments: the experiments of SPEC section 9 in one process: each row
- * simulates its data sets (rfir_sim), runs PS-SLAM, PF-SLAM, FastSLAM and dead
- * reckoning on the same data (rfir_slam), scores them (rfir_eval) and
- * aggregates over seeds into results.json, results.md and img/exp_*.png. */
-#include <rfir/experiments/report.h>
+/* rfir-experiments: the experiments of SPEC section 9: each row simulates its
+ * data sets (rfir_sim), runs PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on
+ * the same data (rfir_slam), scores them (rfir_eval) and aggregates over seeds
+ * into results.json, results.md and img/exp_*.png. A row on one seed is one
+ * run: in this process, on --jobs processes, or as the lines of --manifest
+ * for GNU parallel or a Slurm array, gathered by --merge (rfir_experiments). */
+#include <rfir/experiments/sweep.h>
 
-#include <rfir/common/atomic_file.h>
 #include <rfir/common/cli.h>
 #include <rfir/common/install_paths.h>
 #include <rfir/common/text_input.h>
@@ -12,10 +13,13 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/filesystem.h>
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -40,163 +44,270 @@ std::vector<TRow> selectRows(const std::string& list, bool quick) {
         if (want.erase(r.id)) out.push_back(r);
     if (!want.empty())
         throw rfir::common::CUsageError("--rows: unknown row '" + *want.begin() +
-                                        "' (see --list)");
+                                    "' (see --list)");
     return out;
 }
 
-/** Every (point, sub-run, seed, method) of a row. */
-TRowResults runRow(const TRow& row, std::vector<uint64_t> seeds, const TSetup& setup,
-                   size_t idx, size_t nRows, bool quiet) {
-    FILE* log = quiet ? nullptr : stderr;
-    if (row.maxSeeds && seeds.size() > row.maxSeeds) seeds.resize(row.maxSeeds);
-    TRowResults res;
-    res.row = row;
-    for (size_t p = 0; p < row.points.size(); p++)
-        for (size_t k = 0; k < row.runs.size(); k++)
-            for (uint64_t seed : seeds) {
-                const auto t0 = Clock::now();
-                auto data = simulateDataSet(setup, row.runs[k], row.points[p], seed);
-                const bool first = p == 0 && k == 0 && seed == seeds.front();
-                if (log)
-                    std::fprintf(
-                        log, "[%zu/%zu] %s %s%s%s seed %llu (%zu steps):", idx + 1, nRows,
-                        row.id.c_str(), row.points[p].label.c_str(),
-                        row.points[p].label.empty() ? "" : " ", row.runs[k].label.c_str(),
-                        (unsigned long long)seed, data.sim.steps.size());
-                for (const auto& m : row.methods) {
-                    auto r = runMethod(setup, data, m, row.points[p], seed, first);
-                    r.point = p;
-                    r.run = k;
-                    if (log)
-                        std::fprintf(log, " %s %.0f/%.0f mm", m.label.c_str(),
-                                     1e3 * robotMeanDist(r), 1e3 * tagMeanDist(r));
-                    if (first) res.firstRuns.push_back(r);
-                    r.estPath.clear();
-                    r.estMap.clear();
-                    r.eval.robot->perPose.clear();
-                    res.runs.push_back(std::move(r));
-                }
-                if (log) std::fprintf(log, " (%.1f s)\n", since(t0));
-                if (first) res.firstData = std::move(data);
-            }
-    return res;
+/** --run ROW:SEED: the row (of allRows(quick)) and the seed. */
+std::pair<TRow, uint64_t> parseRun(const std::string& v, bool quick) {
+    const auto colon = v.rfind(':');
+    const auto seed = colon == std::string::npos
+                          ? std::nullopt
+                          : rfir::common::parseNumber<uint64_t>(v.substr(colon + 1));
+    if (!seed) throw rfir::common::CUsageError("--run: '" + v + "' is not ROW:SEED");
+    for (const auto& r : allRows(quick))
+        if (r.id == v.substr(0, colon)) return {r, *seed};
+    throw rfir::common::CUsageError("--run: unknown row '" + v.substr(0, colon) +
+                                "' (see --list)");
 }
 
-void writeOutputs(const std::string& out, const std::vector<TRowResults>& results,
-                  const TMeta& meta, const std::string& notesFile, bool figures,
-                  bool quiet) {
-    const std::string notes = notesFile.empty()
-                                  ? std::string()
-                                  : rfir::common::readSmallTextFile(notesFile, "--notes");
-    if (figures)
-        for (const auto& r : results) writeFigures(out, r);
-    writeJson(out + "/results.json", results, meta);
-    const std::string md = markdownReport(results, meta, notes);
-    rfir::common::writeFileAtomically(out + "/results.md",
-                                      [&](std::ostream& o) { o << md; });
-    if (!quiet)
-        std::cerr << "rfir-experiments: wrote " << out << "/results.md, results.json"
-                  << (figures ? ", img/exp_*.png" : "") << "\n";
+/** Of the options, at most one may be given. */
+void atMostOne(const std::vector<std::pair<const TCLAP::Arg*, const char*>>& given) {
+    std::vector<const char*> set;
+    for (const auto& [arg, name] : given)
+        if (arg->isSet()) set.push_back(name);
+    if (set.size() > 1)
+        throw rfir::common::CUsageError(std::string(set[0]) + " and " + set[1] +
+                                    " do not go together");
+}
+
+/** What the command line asks for. */
+struct TArgs {
+    std::vector<TRow> rows;
+    TSetup setup;
+    TMeta meta;
+    std::string out, notes, merge;
+    bool list = false, manifest = false, runOne = false, figures = true, quiet = false;
+};
+
+/** The options (TCLAP registers each with cmd as it is built). */
+struct TCli {
+    template <typename T>
+    using CNumberArg = rfir::common::CNumberArg<T>;
+    TCLAP::CmdLine cmd{
+        "rfir-experiments: runs the experiment rows of the seeds' tables and figures "
+        "(PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on the same simulated data, "
+        "several seeds each) and writes OUT/results.json (every raw number), "
+        "OUT/timings.json (the times), OUT/results.md (tables beside the seeds' "
+        "numbers) and OUT/img/exp_*.png. A row on one seed is one run: --jobs N runs "
+        "them on N processes; --manifest prints one command per run (for GNU "
+        "parallel or a Slurm array) and --merge gathers their folders.",
+        ' ', RFIR_VERSION};
+    TCLAP::ValueArg<std::string> rows{
+        "",    "rows", "comma-separated row ids (default: all; see --list)", false, "all",
+        "IDS", cmd};
+    TCLAP::SwitchArg list{"", "list", "list the rows and exit", cmd};
+    CNumberArg<unsigned> seeds{"",    "seeds", "seeds per row (default 8, --quick 1)",
+                               false, 0,       "N",
+                               cmd,   1,       100000};
+    CNumberArg<uint64_t> firstSeed{
+        "", "seed", "first seed: seeds are S, S+1, ... (default 1)", false, 1, "S", cmd};
+    TCLAP::SwitchArg quick{
+        "", "quick", "tiny runs: first sub-run, sweep end points, 40 s of simulated time",
+        cmd};
+    TCLAP::ValueArg<std::string> out{
+        "",
+        "out-dir",
+        "output folder (required unless --list); with --manifest, the folder the runs "
+        "write into (DIR/ROW/seedS); with --run, the run's folder",
+        false,
+        "",
+        "DIR",
+        cmd};
+    CNumberArg<unsigned> jobs{
+        "",
+        "jobs",
+        "run the rows and seeds on N processes (default 1); the results are the same",
+        false,
+        1,
+        "N",
+        cmd,
+        1,
+        1024};
+    TCLAP::SwitchArg manifest{
+        "", "manifest",
+        "print one command per run (a row on one seed) on stdout, each writing under "
+        "--out-dir, and do nothing else: for GNU parallel or a Slurm array",
+        cmd};
+    TCLAP::ValueArg<std::string> merge{
+        "",
+        "merge",
+        "gather the run folders the manifest's commands wrote in DIR (give the sweep "
+        "options given to --manifest) into --out-dir's results",
+        false,
+        "",
+        "DIR",
+        cmd};
+    TCLAP::ValueArg<std::string> runOne{
+        "",
+        "run",
+        "run one row on one seed and write its folder (run.json) to --out-dir, for "
+        "--merge (the lines of --manifest)",
+        false,
+        "",
+        "ROW:SEED",
+        cmd};
+    TCLAP::ValueArg<std::string> cfgDir{
+        "",
+        "config-dir",
+        "folder of the sim_*.ini and slam_*.ini (default: the installed stock INIs)",
+        false,
+        rfir::common::stockConfigDir(),
+        "DIR",
+        cmd};
+    TCLAP::ValueArg<std::string> notes{
+        "", "notes", "markdown inserted in results.md", false, "", "FILE", cmd};
+    TCLAP::ValueArg<std::string> revision{
+        "",    "revision", "source revision to record in the report (e.g. git describe)",
+        false, "",         "TEXT",
+        cmd};
+    TCLAP::SwitchArg noFig{"", "no-figures", "do not draw the PNG figures", cmd};
+    TCLAP::MultiArg<std::string> sets{
+        "",
+        "set",
+        "override an INI key in every INI of the run, after the rows' own edits: a "
+        "simulation INI's (e.g. trajectory.speed=0.3) or a SLAM INI's (e.g. "
+        "slam.robot_particles=200); [kidnap] is in both: sim:kidnap.KEY=VALUE or "
+        "slam:kidnap.KEY=VALUE (repeatable)",
+        false,
+        "SECTION.KEY=VALUE",
+        cmd};
+    TCLAP::SwitchArg quiet{"q", "quiet", rfir::common::kQuietHelp, cmd};
+};
+
+/** Reads the command line into `a`, every check before any work: std::nullopt
+ * to go on, else the exit code (--help, or 2 after a usage error). */
+std::optional<int> parseArgs(int argc, char** argv, TArgs& a) {
+    TCli c;
+    if (const auto code = rfir::common::parseCommandLine(
+            c.cmd, argc, argv, {{"--out", "--out-dir"}, {"--first-seed", "--seed"}}))
+        return code;
+
+    atMostOne({{&c.list, "--list"},
+               {&c.runOne, "--run"},
+               {&c.manifest, "--manifest"},
+               {&c.merge, "--merge"},
+               {&c.jobs, "--jobs"}});
+    a.meta.quick = c.quick.getValue();
+    a.meta.sets = c.sets.getValue();
+    a.meta.jobs = c.merge.isSet() ? 0 : c.jobs.getValue();
+    a.meta.revision = c.revision.getValue();
+    if (c.runOne.isSet()) {
+        for (const auto& [arg, name] :
+             std::vector<std::pair<const TCLAP::Arg*, const char*>>{
+                 {&c.rows, "--rows"}, {&c.seeds, "--seeds"}, {&c.firstSeed, "--seed"}})
+            atMostOne({{&c.runOne, "--run"}, {arg, name}});
+        const auto [row, seed] = parseRun(c.runOne.getValue(), c.quick.getValue());
+        a.rows = {row};
+        a.meta.seeds = {seed};
+    } else {
+        a.rows = selectRows(c.rows.getValue(), c.quick.getValue());
+        const unsigned n = c.seeds.isSet()      ? c.seeds.getValue()
+                           : c.quick.getValue() ? 1
+                                                : 8;
+        for (unsigned i = 0; i < n; i++)
+            a.meta.seeds.push_back(c.firstSeed.getValue() + i);
+    }
+    a.out = c.out.getValue(), a.notes = c.notes.getValue(), a.merge = c.merge.getValue();
+    a.list = c.list.getValue(), a.manifest = c.manifest.getValue(),
+    a.runOne = c.runOne.isSet();
+    a.figures = !c.noFig.getValue(), a.quiet = c.quiet.getValue();
+    if (!a.list && a.out.empty())
+        throw rfir::common::CUsageError("--out-dir DIR is required");
+    if (c.notes.isSet() && !mrpt::system::fileExists(a.notes))
+        throw rfir::common::CUsageError("--notes: cannot read '" + a.notes + "'");
+    if (c.merge.isSet() && !mrpt::system::directoryExists(a.merge))
+        throw rfir::common::CUsageError("--merge: no folder '" + a.merge + "'");
+    rfir::common::checkFolderOption("--config-dir", c.cfgDir.getValue());
+    a.setup = makeSetup(c.cfgDir.getValue(), c.sets.getValue());
+    // Every INI with every edit, before hours of work (an INI's own error
+    // passes on: exit 1 naming the file).
+    if (!a.list) checkConfigs(a.setup, a.rows);
+    a.meta.commandLine = sweepCommand(a.rows, a.meta);
+    for (int i = 0; i < argc; i++)
+        a.meta.invocation +=
+            (i ? " " + std::string(argv[i]) : mrpt::system::extractFileName(argv[0]));
+    return std::nullopt;
+}
+
+/** OUT/.runs.<pid> folders of earlier sweeps killed before their end. */
+void removeStaleScratch(const std::string& out) {
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(out, ec)) {
+        const std::string n = e.path().filename().string();
+        const auto pid =
+            rfir::common::parseNumber<int>(n.substr(std::min<size_t>(6, n.size())));
+        if (n.rfind(".runs.", 0) == 0 && pid && *pid > 0 && ::kill(*pid, 0) != 0 &&
+            errno == ESRCH)
+            std::filesystem::remove_all(e.path(), ec);
+    }
+}
+
+/** A scratch folder removed when it goes out of scope. */
+struct TScratch {
+    std::string dir;
+    ~TScratch() {
+        std::error_code ec;
+        if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+    }
+};
+
+/** The sweep's runs (or, with --merge, their folders) into the reports. */
+void runSweep(TArgs& a) {
+    const std::string notes =
+        a.notes.empty() ? "" : rfir::common::readSmallTextFile(a.notes, "--notes");
+    const auto t0 = Clock::now();
+    std::string runsDir = a.merge;
+    TScratch scratch;
+    if (a.merge.empty()) {
+        // The runs' folders go to a scratch folder in OUT, removed after.
+        runsDir = scratch.dir = a.out + "/.runs." + std::to_string(::getpid());
+        removeStaleScratch(a.out);
+        std::error_code ec;
+        std::filesystem::remove_all(runsDir, ec);
+        std::filesystem::create_directories(runsDir, ec);  // fail before the work
+        if (ec || !mrpt::system::directoryExists(runsDir))
+            throw std::runtime_error("cannot create the folder '" + runsDir + "'");
+        runAll(a.rows, a.setup, a.meta, a.figures, runsDir, a.meta.jobs, a.quiet);
+    }
+    const auto results = loadRuns(runsDir, a.rows, a.setup, a.meta);
+    a.meta.wallSeconds = since(t0);
+    writeReports(a.out, runsDir, results, a.meta, notes, a.figures);
+    if (!a.quiet)
+        std::cerr << "rfir-experiments: wrote " << a.out
+                  << "/results.md, results.json, timings.json"
+                  << (a.figures ? ", img/exp_*.png" : "") << "\n";
 }
 }  // namespace
 
 int main(int argc, char** argv) {
     try {
-        TCLAP::CmdLine cmd(
-            "rfir-experiments: runs the experiment rows of the seeds' tables and figures "
-            "(PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on the same simulated data, "
-            "several seeds each) and writes OUT/results.json (every raw number), "
-            "OUT/results.md (tables beside the seeds' numbers) and OUT/img/exp_*.png.",
-            ' ', RFIR_VERSION);
-        TCLAP::ValueArg<std::string> rows("", "rows",
-                                          "comma-separated row ids (default: all; "
-                                          "see --list)",
-                                          false, "all", "IDS", cmd);
-        TCLAP::SwitchArg list("", "list", "list the rows and exit", cmd);
-        rfir::common::CNumberArg<unsigned> seeds("", "seeds",
-                                                 "seeds per row (default 8, --quick 1)",
-                                                 false, 0, "N", cmd, 1, 100000);
-        rfir::common::CNumberArg<uint64_t> firstSeed(
-            "", "seed", "first seed: seeds are S, S+1, ... (default 1)", false, 1, "S",
-            cmd);
-        TCLAP::SwitchArg quick("", "quick",
-                               "tiny runs: first sub-run, sweep end points, "
-                               "40 s of simulated time",
-                               cmd);
-        TCLAP::ValueArg<std::string> out("", "out-dir",
-                                         "output folder (required unless --list)", false,
-                                         "", "DIR", cmd);
-        TCLAP::ValueArg<std::string> cfgDir(
-            "", "config-dir",
-            "folder of the sim_*.ini and "
-            "slam_*.ini (default: the installed stock INIs)",
-            false, rfir::common::stockConfigDir(), "DIR", cmd);
-        TCLAP::ValueArg<std::string> notes("", "notes", "markdown inserted in results.md",
-                                           false, "", "FILE", cmd);
-        TCLAP::ValueArg<std::string> revision("", "revision",
-                                              "source revision to record in "
-                                              "the report (e.g. git describe)",
-                                              false, "", "TEXT", cmd);
-        TCLAP::SwitchArg noFig("", "no-figures", "do not draw the PNG figures", cmd);
-        TCLAP::MultiArg<std::string> sets(
-            "", "set",
-            "override an INI key in every INI of the run, after the rows' own edits: a "
-            "simulation INI's (e.g. trajectory.speed=0.3) or a SLAM INI's (e.g. "
-            "slam.robot_particles=200); [kidnap] is in both: sim:kidnap.KEY=VALUE or "
-            "slam:kidnap.KEY=VALUE (repeatable)",
-            false, "SECTION.KEY=VALUE", cmd);
-        TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
-        if (const auto code = rfir::common::parseCommandLine(
-                cmd, argc, argv, {{"--out", "--out-dir"}, {"--first-seed", "--seed"}}))
-            return *code;
-
-        std::vector<TRow> selected;
-        TSetup setup;
+        TArgs a;
         try {  // usage errors: exit as a parse error does
-            using rfir::common::CUsageError;
-            selected = selectRows(rows.getValue(), quick.getValue());
-            if (!list.getValue() && out.getValue().empty())
-                throw CUsageError("--out-dir DIR is required");
-            if (notes.isSet() && !mrpt::system::fileExists(notes.getValue()))
-                throw CUsageError("--notes: cannot read '" + notes.getValue() + "'");
-            rfir::common::checkFolderOption("--config-dir", cfgDir.getValue());
-            setup = makeSetup(cfgDir.getValue(), sets.getValue());
-            // Every INI with every edit, before hours of work (an INI's own
-            // error passes on: exit 1 naming the file).
-            if (!list.getValue()) checkConfigs(setup, selected);
+            if (const auto code = parseArgs(argc, argv, a)) return *code;
+            if (a.manifest) {
+                std::string lines;  // whole, or nothing on an error
+                for (const auto& r : sweepRuns(a.rows, a.meta.seeds))
+                    lines +=
+                        shellLine(runArgs(a.setup, a.meta, r, a.figures, a.out)) + "\n";
+                if (!a.quiet) std::cout << lines;
+                return 0;
+            }
         } catch (const rfir::common::CUsageError& e) {
             std::cerr << "rfir-experiments: error: " << e.what() << "\n";
             return rfir::common::kUsageExitCode;
         }
-        if (list.getValue()) {
-            if (quiet.getValue()) return 0;
+        if (a.list) {
+            if (a.quiet) return 0;
             for (const auto& r : allRows(false))
                 std::cout << r.id << "\t" << r.source << ": " << r.title << "\n";
             return 0;
         }
-        const unsigned n = seeds.isSet() ? seeds.getValue() : quick.getValue() ? 1 : 8;
-        TMeta meta;
-        meta.quick = quick.getValue();
-        meta.revision = revision.getValue();
-        meta.sets = sets.getValue();
-        for (unsigned i = 0; i < n; i++) meta.seeds.push_back(firstSeed.getValue() + i);
-        for (int i = 0; i < argc; i++)
-            meta.commandLine +=
-                (i ? " " + std::string(argv[i]) : mrpt::system::extractFileName(argv[0]));
-        // Fail before hours of work, not after.
-        std::error_code ec;
-        std::filesystem::create_directories(out.getValue() + "/img", ec);
-        if (ec || !mrpt::system::directoryExists(out.getValue() + "/img"))
-            throw std::runtime_error("cannot create the folder '" + out.getValue() +
-                                     "/img'");
-        const auto t0 = Clock::now();
-        std::vector<TRowResults> results;
-        for (size_t i = 0; i < selected.size(); i++)
-            results.push_back(runRow(selected[i], meta.seeds, setup, i, selected.size(),
-                                     quiet.getValue()));
-        meta.wallSeconds = since(t0);
-        writeOutputs(out.getValue(), results, meta, notes.getValue(), !noFig.getValue(),
-                     quiet.getValue());
+        if (a.runOne)
+            runToFolder(a.setup, a.meta, a.rows[0], a.meta.seeds[0], a.figures, a.out,
+                        a.quiet ? nullptr : stderr);
+        else
+            runSweep(a);
         return 0;
     } catch (const std::exception& e) {
         std::cerr << "rfir-experiments: error: " << e.what() << "\n";

@@ -24,18 +24,17 @@ rfir::common::TPath2D odometryPath(const TDataSet& d) {
     return rfir::eval::alignOdometryAtStart(odo, d.sim.groundTruth);
 }
 
-mrpt::img::CImage mapPanels(const TRowResults& r) {
-    const auto& d = *r.firstData;
+mrpt::img::CImage mapPanels(const TRow& row, const TDataSet& d,
+                            const std::vector<TRunResult>& runs) {
     const auto odo = odometryPath(d);
     std::vector<mrpt::img::CImage> panels;
-    for (const auto& run : r.firstRuns) {
-        const auto* spec = &r.row.methods[panels.size()];
-        for (const auto& m : r.row.methods)
+    for (const auto& run : runs) {
+        const auto* spec = &row.methods[panels.size()];
+        for (const auto& m : row.methods)
             if (m.label == run.method) spec = &m;
         if (isReference(*spec)) continue;
         rfir::eval::TMapFigure f;
-        f.title =
-            run.method + " (" + r.row.id + ", seed " + std::to_string(run.seed) + ")";
+        f.title = run.method + " (" + row.id + ", seed " + std::to_string(run.seed) + ")";
         f.gtPath = d.sim.groundTruth;
         f.estPath = run.estPath;
         f.odomPath = odo;
@@ -77,14 +76,14 @@ TLinePlot sweepPlot(const TRowResults& r, const std::string& what, const TGetter
     return p;
 }
 
-TLinePlot kidnapPlot(const TRowResults& r) {
+TLinePlot kidnapPlot(const std::vector<TRunResult>& runs) {
     TLinePlot p;
     p.title = "kidnapping: robot error over time (seed " +
-              std::to_string(r.firstRuns.empty() ? 0 : r.firstRuns.front().seed) + ")";
+              std::to_string(runs.empty() ? 0 : runs.front().seed) + ")";
     p.xLabel = "time [s]";
     p.yLabel = "robot distance error [mm]";
     p.logY = true;
-    for (const auto& run : r.firstRuns) {
+    for (const auto& run : runs) {
         TSeries s;
         s.label = run.method;
         s.markers = false;
@@ -96,40 +95,51 @@ TLinePlot kidnapPlot(const TRowResults& r) {
 }
 }  // namespace
 
-std::vector<std::string> figureNames(const TRowResults& r) {
+std::vector<std::string> firstSeedFigureNames(const TRow& row) {
     std::vector<std::string> v;
-    const std::string b = "img/exp_" + r.row.id;
-    if (r.row.figure && r.firstData) v.push_back(b + ".png");
-    if (r.row.kind == TRowKind::Sweep) {
-        v.push_back(b + "_robot.png");
-        v.push_back(b + "_tags.png");
-        if (r.row.plotTime) v.push_back(b + "_time.png");
-    }
-    if (r.row.kind == TRowKind::Kidnap && !r.firstRuns.empty())
-        v.push_back(b + "_error.png");
+    if (row.figure) v.push_back("exp_" + row.id + ".png");
+    if (row.kind == TRowKind::Kidnap) v.push_back("exp_" + row.id + "_error.png");
     return v;
 }
 
-std::vector<std::string> writeFigures(const std::string& outDir, const TRowResults& r) {
-    const auto names = figureNames(r);
-    const std::string b = outDir + "/img/exp_" + r.row.id;
-    if (r.row.figure && r.firstData)
-        rfir::eval::savePngAtomically(b + ".png", mapPanels(r));
-    if (r.row.kind == TRowKind::Sweep) {
-        rfir::eval::plotLines(b + "_robot.png", sweepPlot(r, "robot error [mm]",
-                                                          robotMeanDist, 1e3, false));
-        rfir::eval::plotLines(b + "_tags.png",
-                              sweepPlot(r, "tag error [mm]", tagMeanDist, 1e3, false));
-        if (r.row.plotTime)
-            rfir::eval::plotLines(
-                b + "_time.png",
-                sweepPlot(
-                    r, "time per update [ms]",
-                    [](const TRunResult& x) { return x.msPerStep; }, 1.0, true));
-    }
-    if (r.row.kind == TRowKind::Kidnap && !r.firstRuns.empty())
-        rfir::eval::plotLines(b + "_error.png", kidnapPlot(r));
-    return names;
+std::vector<std::string> sweepFigureNames(const TRow& row) {
+    std::vector<std::string> v;
+    if (row.kind != TRowKind::Sweep) return v;
+    for (const char* s : {"_robot", "_tags", "_time"})
+        if (row.plotTime || std::string(s) != "_time")
+            v.push_back("exp_" + row.id + s + ".png");
+    return v;
+}
+
+std::vector<std::string> figureNames(const TRow& row) {
+    std::vector<std::string> v;
+    for (const auto& names : {firstSeedFigureNames(row), sweepFigureNames(row)})
+        for (const auto& n : names) v.push_back("img/" + n);
+    return v;
+}
+
+void writeFirstSeedFigures(const TFigurePath& path, const TRow& row, const TDataSet& d,
+                           const std::vector<TRunResult>& runs) {
+    if (row.figure)
+        rfir::eval::savePngAtomically(path("exp_" + row.id + ".png"),
+                                      mapPanels(row, d, runs));
+    if (row.kind == TRowKind::Kidnap)
+        rfir::eval::plotLines(path("exp_" + row.id + "_error.png"), kidnapPlot(runs));
+}
+
+void writeSweepFigures(const TFigurePath& path, const TRowResults& r) {
+    if (r.row.kind != TRowKind::Sweep) return;
+    const std::string b = "exp_" + r.row.id;
+    rfir::eval::plotLines(path(b + "_robot.png"),
+                          sweepPlot(r, "robot error [mm]", robotMeanDist, 1e3, false));
+    rfir::eval::plotLines(path(b + "_tags.png"),
+                          sweepPlot(r, "tag error [mm]", tagMeanDist, 1e3, false));
+    if (r.row.plotTime)
+        rfir::eval::plotLines(
+            path(b + "_time.png"),
+            sweepPlot(
+                r, "time per update [ms]",
+                [](const TRunResult& x) { return x.msPerStep; }, 1.0, true));
 }
 
 }  // namespace rfir::experiments

@@ -1,4 +1,5 @@
-/* rfir-experiments: results.json, every raw number (SI units: m, rad, s). */
+/* rfir-experiments: results.json, every raw number (SI units: m, rad, s), and
+ * timings.json, the times of the same runs. */
 #include <rfir/experiments/report.h>
 
 #include <rfir/common/atomic_file.h>
@@ -11,27 +12,6 @@ namespace rfir::experiments {
 namespace {
 using rfir::common::printed;
 using rfir::common::TJson;
-
-TJson runJson(const TRow& row, const TRunResult& r) {
-    TJson j;
-    j["point"] = row.points[r.point].label;
-    j["x"] = printed(row.points[r.point].x);
-    j["run"] = row.runs[r.run].label;
-    j["method"] = r.method;
-    j["seed"] = r.seed;
-    j["steps"] = r.steps;
-    j["ms_per_step"] = printed(r.msPerStep);
-    j["max_step_ms"] = printed(r.maxStepMs);
-    j["total_s"] = printed(r.totalSeconds);
-    j["resets"] = r.resets;
-    if (std::isfinite(r.beforeKidnap) || std::isfinite(r.afterKidnap)) {
-        j["before_kidnap_mean_dist"] = printed(r.beforeKidnap);
-        j["after_kidnap_mean_dist"] = printed(r.afterKidnap);
-        j["recovery_time"] = printed(r.recoveryTime);
-    }
-    j["errors"] = TJson::parse(rfir::eval::toJson(r.eval));  // as errors.json has it
-    return j;
-}
 
 TJson rowJson(const TRowResults& rr) {
     const TRow& row = rr.row;
@@ -56,7 +36,19 @@ TJson rowJson(const TRowResults& rr) {
     }
     j["seed_numbers_mm"] = seeds;
     j["runs"] = TJson::array();
-    for (const auto& r : rr.runs) j["runs"].push_back(runJson(row, r));
+    for (const auto& r : rr.runs) j["runs"].push_back(TJson::parse(r.entry));
+    return j;
+}
+
+TJson timingJson(const TRow& row, const TRunResult& r) {
+    TJson j;
+    j["point"] = row.points[r.point].label;
+    j["run"] = row.runs[r.run].label;
+    j["method"] = r.method;
+    j["seed"] = r.seed;
+    j["ms_per_step"] = printed(r.msPerStep);
+    j["max_step_ms"] = printed(r.maxStepMs);
+    j["total_s"] = printed(r.totalSeconds);
     return j;
 }
 }  // namespace
@@ -69,9 +61,31 @@ void writeJson(const std::string& path, const std::vector<TRowResults>& rows,
     j["quick"] = meta.quick;
     j["seeds"] = meta.seeds;
     j["ini_edits"] = meta.sets;
-    j["wall_seconds"] = printed(meta.wallSeconds);
     j["rows"] = TJson::array();
     for (const auto& r : rows) j["rows"].push_back(rowJson(r));
+    rfir::common::writeFileAtomically(
+        path, [&](std::ostream& o) { o << rfir::common::dumpJson(j) << "\n"; });
+}
+
+void writeTimings(const std::string& path, const std::vector<TRowResults>& rows,
+                  const TMeta& meta) {
+    TJson j;
+    j["generator"] = "rfir-experiments";
+    j["command"] = meta.invocation;
+    j["processes"] = meta.jobs;  // 0: merged (--merge)
+    j["wall_seconds"] = printed(meta.wallSeconds);
+    double runs = 0;
+    for (const auto& r : rows) runs += r.runSeconds;
+    j["runs_seconds"] = printed(runs);
+    j["rows"] = TJson::array();
+    for (const auto& r : rows) {
+        TJson row;
+        row["id"] = r.row.id;
+        row["runs_seconds"] = printed(r.runSeconds);
+        row["runs"] = TJson::array();
+        for (const auto& x : r.runs) row["runs"].push_back(timingJson(r.row, x));
+        j["rows"].push_back(row);
+    }
     rfir::common::writeFileAtomically(
         path, [&](std::ostream& o) { o << rfir::common::dumpJson(j) << "\n"; });
 }

@@ -13,19 +13,21 @@ namespace rfir::experiments {
 struct TRowResults {
     TRow row;
     std::vector<TRunResult> runs;  //!< every (point, sub-run, seed, method)
-    /** First seed, point 0, sub-run 0: the data set and the runs with their
-     * paths and maps (figures). */
-    std::optional<TDataSet> firstData;
-    std::vector<TRunResult> firstRuns;
+    double runSeconds = 0;         //!< wall time of its runs, summed
 };
 
 /** What the whole invocation was. */
 struct TMeta {
     std::vector<uint64_t> seeds;
     bool quick = false;
+    /** The options that decide the numbers (rows, seeds, --quick, --set), the
+     * same however the sweep ran (sweepCommand). */
     std::string commandLine;
+    std::string invocation;         //!< the command line as given (timings.json)
     std::string revision;           //!< source revision (--revision), for the record
     std::vector<std::string> sets;  //!< the --set edits, as given
+    // Timings: timings.json and the results.md header only.
+    unsigned jobs = 1;  //!< processes; 0: merged from run folders (--merge)
     double wallSeconds = 0;
 };
 

@@ -37,6 +37,9 @@ struct TRunResult {
     // For figures (kept for the first seed only).
     rfir::common::TPath2D estPath;
     rfir::common::TMapFile estMap;
+    /** Its results.json entry (one JSON line, timings aside), as its run
+     * folder's run.json holds it (loadRuns). */
+    std::string entry;
 };
 
 /** A simulated data set plus what the figures need. */

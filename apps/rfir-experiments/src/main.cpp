@@ -44,7 +44,7 @@ std::vector<TRow> selectRows(const std::string& list, bool quick) {
         if (want.erase(r.id)) out.push_back(r);
     if (!want.empty())
         throw rfir::common::CUsageError("--rows: unknown row '" + *want.begin() +
-                                    "' (see --list)");
+                                        "' (see --list)");
     return out;
 }
 
@@ -58,7 +58,7 @@ std::pair<TRow, uint64_t> parseRun(const std::string& v, bool quick) {
     for (const auto& r : allRows(quick))
         if (r.id == v.substr(0, colon)) return {r, *seed};
     throw rfir::common::CUsageError("--run: unknown row '" + v.substr(0, colon) +
-                                "' (see --list)");
+                                    "' (see --list)");
 }
 
 /** Of the options, at most one may be given. */
@@ -68,7 +68,7 @@ void atMostOne(const std::vector<std::pair<const TCLAP::Arg*, const char*>>& giv
         if (arg->isSet()) set.push_back(name);
     if (set.size() > 1)
         throw rfir::common::CUsageError(std::string(set[0]) + " and " + set[1] +
-                                    " do not go together");
+                                        " do not go together");
 }
 
 /** What the command line asks for. */

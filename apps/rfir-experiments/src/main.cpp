@@ -1,4 +1,4 @@
-/* rfir-experiments: the experiments of SPEC section 9 in one process: each row
+/* rfir-experiments: the papers' experiments in one process: each row
  * simulates its data sets (rfir_sim), runs PS-SLAM, PF-SLAM, FastSLAM and dead
  * reckoning on the same data (rfir_slam), scores them (rfir_eval) and
  * aggregates over seeds into results.json, results.md and img/exp_*.png. */

@@ -59,7 +59,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     rfir::obs::registerAllClasses();
     rfir::maps::registerAllClasses();
     rfir::maps::registerIRClasses();
-    // A relative emitter_file is relative to the INI: give the seeds one.
+    // A relative emitter_file is relative to the INI: give the corpus inputs one.
     const std::string e(kEmitters);
     rfir::fuzz::writeInput("emitters.txt", reinterpret_cast<const uint8_t*>(e.data()),
                            e.size());

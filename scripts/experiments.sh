@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the experiments of the seeds' tables and figures (rfir-experiments):
+# Runs the experiments of the papers' tables and figures (rfir-experiments):
 # PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on the same simulated data,
 # several seeds per row; writes docs/results.md, docs/results.json and
 # docs/img/exp_*.png. Builds rfir-experiments first if needed.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 12's bar on the stock fault INIs (docs/slam.md, "Faults: the bar"):
+# The bar on the stock fault INIs (docs/slam.md, "Faults: the bar"):
 # each simulator INI without a kidnapping, seeds 1-3, every method with its
 # stock INI, scored against the ground truth next to the odometry alone.
 # PF and PS must beat the odometry's mean error, stay within 1.25 x

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses of fuzz/ with clang (ASan + UBSan) in
-# build-fuzz and runs each for SECONDS (default 60) from its seed corpus in
+# build-fuzz and runs each for SECONDS (default 60) from its starting corpus in
 # fuzz/corpus/<target>. Exits non-zero on any crash, leak, timeout (10 s per
 # input) or memory blow-up (2 GB resident, or one allocation above 256 MB); the
 # input is left in
@@ -37,7 +37,8 @@ for t in $TARGETS; do
   work="$BUILD/corpus/$t" art="$BUILD/artifacts/$t" log="$BUILD/logs/$t.log"
   mkdir -p "$work" "$art" "$(dirname "$log")"
   echo "[fuzz] $t: ${SECS}s"
-  # New inputs go to the work corpus (first folder); the seeds stay as they are.
+  # New inputs go to the work corpus (first folder); the starting corpus stays
+  # as it is.
   # Inputs are a few KB: one allocation above 256 MB is an unbounded read.
   if "$BUILD/bin/fuzz_$t" -max_total_time="$SECS" -seed="$SEED" -rss_limit_mb=2048 -timeout=10 \
       -malloc_limit_mb=256 \

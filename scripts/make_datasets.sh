@@ -24,7 +24,7 @@ run() {
     "${sets[@]}"
 }
 
-# The former PS-SLAM demo: 300 mm squares, 4 tags/m^2, random path, 90 s of robot time.
+# 300 mm squares, 4 tags/m^2, random path, 90 s of robot time.
 run rfid_300mm_4tags_random_90s sim_rfid_300mm_4tags_random 1 simulation.max_duration=90
 # PF-SLAM: 60 mm squares, 16 tags/m^2, rectangular loop x3 (180 s).
 run rfid_60mm_16tags_loop sim_rfid_60mm_16tags_loop 1

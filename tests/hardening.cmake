@@ -1,5 +1,6 @@
 # Corrupt rawlogs: the bounded reader, MRPT's classes guarded, the reproducers
-# of issue 15 through every program, and a truncation / byte-flip sweep.
+# (tests/data/repro, tests/data/fuzz_crashes) through every program, and a
+# truncation / byte-flip sweep.
 rfir_add_test(test_rawlog_hardening
   SOURCES test_rawlog_bounded.cpp test_rawlog_hardening.cpp test_checked_classes.cpp
           test_rawlog_finite.cpp test_gz_input.cpp

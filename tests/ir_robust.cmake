@@ -1,4 +1,4 @@
-# IR localization that is not lost (issue 12 item 6): the simulator's IR
+# IR localization that is not lost: the simulator's IR
 # fault INIs and the raw-window rotation run, localized with the stock INI.
 rfir_add_test(test_ir_robust
   SOURCES test_ir_robust.cpp

@@ -1,5 +1,5 @@
 // The offline smoother (rfir::slam::smoothRun): exactness on noise-free data,
-// and accuracy on the seeds' setups against the filter it starts from.
+// and accuracy on the papers' setups against the filter it starts from.
 #include "test_slam_sim.h"
 
 #include <rfir/slam/graph_smoother.h>
@@ -92,14 +92,14 @@ TEST(GraphSmoother, RejectsAPathOfTheWrongLength) {
                  std::invalid_argument);
 }
 
-// Beyond the seeds: on the 60 mm loop (thesis table 3.1) the filters keep the
+// Beyond the papers: on the 60 mm loop (thesis table 3.1) the filters keep the
 // first lap's drift (docs/slam.md, "Known gaps"); smoothing PF-SLAM's run
 // offline with the whole log removes most of it. The thresholds are the
-// issue's 60 mm bar (robot < 40 mm, tags < 45 mm), here for the smoothed run,
+// 60 mm bar (robot < 40 mm, tags < 45 mm), here for the smoothed run,
 // plus at most half the filter's error. Measured (seeds 1-2): PF-SLAM 98.3 /
 // 97.9 mm, smoothed 25.8 / 28.1 mm. The filter is the one the thresholds were
 // set against: the stock INI before its heading noise widened (a3 0.02, no
-// read confirmation; 2026-12-04). The smoothed run is the same from either
+// read confirmation). The smoothed run is the same from either
 // filter (the smoother's odometry factors keep a3 = 0.02, [smoother]
 // odometry_a3); the current stock filter maps the tags better (70 / 36 mm
 // against 105 / 32 mm), so half of its error is a different bar.

@@ -1,4 +1,4 @@
-// The offline smoother on the runs a real robot records (issue 12, item 5):
+// The offline smoother on the runs a real robot records:
 // after a kidnapping, on 300 mm readers with empty polls written, and on the
 // fault INIs; each against the filter it starts from.
 #include "test_slam_sim.h"
@@ -76,12 +76,11 @@ TEST(GraphSmootherRobust, DISABLED_Measure) {
     }
 }
 
-// Issue 12's bar: after a kidnapping the smoothed run is at least as good as
+// The bar: after a kidnapping the smoothed run is at least as good as
 // the filter it starts from, over the whole run and after the put-down (PF-
-// SLAM, the stock 60 mm and 300 mm kidnap INIs, seeds 1-3). The former
-// Gauss-Newton smoother (no robust loss) averaged the carried robot's frozen
-// odometry in: 465-473 mm against the filter's 84-196 mm at 60 mm, 194-221
-// against 121-216 mm at 300 mm.
+// SLAM, the stock 60 mm and 300 mm kidnap INIs, seeds 1-3). Without robust
+// losses and the cut, a smoother averages the carried robot's frozen odometry
+// in and ends far worse than the filter.
 TEST(GraphSmootherRobust, KidnapNoWorseThanTheFilter) {
     for (const char* ini : {"sim_kidnap.ini", "sim_kidnap_300mm.ini"})
         for (uint64_t seed = 1; seed <= 3; seed++) {
@@ -92,7 +91,7 @@ TEST(GraphSmootherRobust, KidnapNoWorseThanTheFilter) {
         }
 }
 
-// Issue 12's bar: on the 300 mm loop with rotation and empty polls written
+// The bar: on the 300 mm loop with rotation and empty polls written
 // (the simulator's default), the smoothed robot error is at most 0.8 x the
 // filter's (PF-SLAM, seeds 1-3).
 TEST(GraphSmootherRobust, EmptyPolls300mmLoop) {
@@ -139,9 +138,9 @@ TEST(GraphSmootherRobust, DISABLED_FromTruth) {
 // one measurement, with no smoother setting changed for it (PS filter 3094
 // mm mean, smoothed 160 mm, drift estimated 0.0104 rad/m): at most a quarter
 // of the filter's mean and under 0.5 m, and the drift found within a factor
-// of two. Since session 23 the filter closes its first return by smoothing
-// instead of resetting (PS 959 mm mean, no reset) and the smoother, with no
-// cut to make, ends at 95 mm.
+// of two. With loop closure by smoothing the filter closes its first return
+// instead of resetting, and the smoother, with no cut to make, ends well
+// inside these bounds.
 TEST(GraphSmootherRobust, FloorWithHeadingDrift) {
     const auto s = filterAndSmooth(simIni("bench_floor_30x20.ini"), "floor", 3, "ps");
     EXPECT_LT(s.smoothed, 0.25 * s.filter);

@@ -118,7 +118,8 @@ TEST(IniReference, EveryStockKeyAtBadValues) {
     EXPECT_GT(accepted, 0u);
 }
 
-// The reproducers of issue 15: each was accepted with exit 0 and a wrong run.
+// INI values MRPT's readers would let through: each must be refused, not run
+// with a wrong value.
 TEST(IniReference, IssueReproducersAreRefused) {
     const std::string pf = std::string(RFIR_SOURCE_DIR) + "/config_ini/slam_pf.ini";
     auto err = [&](const std::string& s, const std::string& k, const std::string& v) {

@@ -35,7 +35,8 @@ TEST(TagParticleFilter, UpdateWeighsEstimatesAndResamples) {
     TagParticleFilter pf;
     pf.initFromPoints({{0, 0}, {1, 0}, {2, 0}, {3, 0}});
     // Likelihood 1 for x < 1.5, 0 beyond: the mean is taken with the weights
-    // (003 Alg. 1 line 13), then only the two left particles survive.
+    // (the PF-SLAM paper's Algorithm 1, line 13), then only the two left
+    // particles survive.
     pf.update([](const TPoint2D& p) { return p.x < 1.5 ? 0.0 : -1e9; }, rng);
     EXPECT_NEAR(pf.estimate().mean.x, 0.5, 1e-9);
     for (const auto& p : pf.particles()) EXPECT_LT(p.x, 1.5);
@@ -149,7 +150,7 @@ TEST(TagEstimators, PFConvergesForSmallReaders) {
 }
 
 TEST(TagEstimators, SmootherVersusFilterOnLargeReaders) {
-    // 300 mm readers (seeds' PS-SLAM setup). Numbers are printed for the
+    // 300 mm readers (the PS-SLAM paper's setup). Numbers are printed for the
     // report; the assertions only bound the errors well below the reader size.
     TagParticleFilterParams rough;
     rough.rougheningSigma = 0.001;

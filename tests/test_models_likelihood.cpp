@@ -144,7 +144,7 @@ TEST(IniCheck, UnknownKeysAndBadValuesNameTheKey) {
     EXPECT_EQ(s.getDouble("alpha", 7, TRange::aboveZero(10)), 1.0);
 }
 
-// The values MRPT's read_int and read_double let through (issue 15): a
+// The values MRPT's read_int and read_double let through: a
 // leading integer kept, nan and 1e308 taken as numbers.
 TEST(IniCheck, StrictNumbers) {
     using rfir::ini::TRange;

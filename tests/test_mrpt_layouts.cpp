@@ -1,6 +1,6 @@
 // Rawlogs in the layouts MRPT's own programs write and read: every action
-// collection holds a movement; the old layout (empty first action) reads as
-// the new one; MRPT's observation-only layout and its CObservationRFID give
+// collection holds a movement; a layout with an empty first action reads as
+// the same; MRPT's observation-only layout and its CObservationRFID give
 // rfir-slam the same inputs, hence the same outputs, as the project's layout.
 #include <rfir/common/log_convert.h>
 #include <rfir/common/rawlog_io.h>

@@ -140,8 +140,9 @@ TEST(PlainPsProgram, CommandLineConventions) {
 
 TEST(PlainPsProgram, MapsASimulatedLogAndBeatsOdometry) {
     // The biased 60 mm loop (180 s): the plain PS-SLAM's mean position error
-    // is below the odometry's, and the path is whole. (First tried on 120 s of
-    // the 300 mm random path: its odometry had not drifted yet, 85 mm.)
+    // is below the odometry's, and the path is whole. (A log where the
+    // odometry has not drifted yet, such as 120 s of the 300 mm random path,
+    // could not show it.)
     rfir_test::TmpDir d;
     const std::string dir = d / "";
     ASSERT_EQ(

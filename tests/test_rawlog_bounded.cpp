@@ -188,7 +188,7 @@ TEST(MrptGuards, BadEstimationMethodIsRefused) {
     mrpt::obs::CActionRobotMovement2D mv;
     mv.computeFromOdometry(mrpt::poses::CPose2D(0.1, 0.2, 0.3), {});
     auto b = serializedMovement(mv);
-    b[methodOffset() + 1] = 0x09;  // the byte of issue 15's reproducer
+    b[methodOffset() + 1] = 0x09;  // the byte of tests/data/repro/mrpt_segv_min.rawlog
     const auto e = errorOf([&] { readBack(b); });
     EXPECT_NE(e.find("estimationMethod 2304"), std::string::npos) << e;
     b[methodOffset() + 1] = 0;

@@ -109,7 +109,7 @@ const std::vector<std::string> kPrograms = {"rfir-import", "rfir-slam", "rfir-ev
 
 std::vector<std::string> reproducers() {
     std::vector<std::string> v;
-    // Issue 15's reproducers, and the rawlogs fuzzing found crashing.
+    // The hand-made reproducers, and the rawlogs fuzzing found crashing.
     for (const auto* dir : {"/tests/data/repro", "/tests/data/fuzz_crashes/rawlog"})
         if (fs::is_directory(kSrc + dir))
             for (const auto& e : fs::directory_iterator(kSrc + dir))

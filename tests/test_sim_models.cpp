@@ -33,7 +33,7 @@ std::map<std::string, TMapEntry> byId(const TSimOutput& out, TMapEntry::Kind k) 
     return m;
 }
 
-/** Tag position minus reader centre, in the robot frame (SPEC 2: e). */
+/** Tag position minus reader centre, in the robot frame (the read model's e). */
 std::pair<double, double> offset(const CPose2D& p, const rfir::obs::TRFIDReader& r,
                                  const TMapEntry& t) {
     const double dx = t.x - p.x(), dy = t.y - p.y(), c = cos(p.phi()), s = sin(p.phi());

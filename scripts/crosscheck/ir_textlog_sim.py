@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """An IR-ceiling simulator independent of rfir-sim, written from the text-log
-format alone (docs/import.md), as an outside user would: a differential robot
+format alone (docs/textlog.md), as an outside user would: a differential robot
 on a loop under a grid of ceiling emitters (repeated single-code IDs and
 unique two-code IDs), two photodiodes, decoded `ir` records at 10 Hz with the
-thesis' voltage curve (eq. 5.3) plus noise, and the faults of issue 12:
+thesis' voltage curve (eq. 5.3) plus noise, and these faults:
 failed emitters, a moved emitter, wrong codes and voltage outliers.
 Writes NAME.txt (textlog 1), NAME.emitters.txt (the map as the user has it:
 the moved emitter where it was) and NAME.gt.tum. Standard library only; see

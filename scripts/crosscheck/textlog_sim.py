@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """An RFID-floor simulator independent of rfir-sim, written from the text-log
-format alone (docs/import.md), as an outside user would: an omnidirectional
+format alone (docs/textlog.md), as an outside user would: an omnidirectional
 robot, readers of any layout, a tag grid, odometry with a random-walk error,
 optional asynchronous reader polling, epoch timestamps and a kidnapping.
 Writes NAME.txt (textlog 1), NAME.gt.tum and NAME.gt_map.txt. Standard

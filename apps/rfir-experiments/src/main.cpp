@@ -1,4 +1,4 @@
-/* rfir-experiments: the experiments of SPEC section 9: each row simulates its
+/* rfir-experiments: the papers' experiments: each row simulates its
  * data sets (rfir_sim), runs PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on
  * the same data (rfir_slam), scores them (rfir_eval) and aggregates over seeds
  * into results.json, results.md and img/exp_*.png. A row on one seed is one
@@ -85,10 +85,10 @@ struct TCli {
     template <typename T>
     using CNumberArg = rfir::common::CNumberArg<T>;
     TCLAP::CmdLine cmd{
-        "rfir-experiments: runs the experiment rows of the seeds' tables and figures "
+        "rfir-experiments: runs the experiment rows of the papers' tables and figures "
         "(PS-SLAM, PF-SLAM, FastSLAM and dead reckoning on the same simulated data, "
         "several seeds each) and writes OUT/results.json (every raw number), "
-        "OUT/timings.json (the times), OUT/results.md (tables beside the seeds' "
+        "OUT/timings.json (the times), OUT/results.md (tables beside the papers' "
         "numbers) and OUT/img/exp_*.png. A row on one seed is one run: --jobs N runs "
         "them on N processes; --manifest prints one command per run (for GNU "
         "parallel or a Slurm array) and --merge gathers their folders.",

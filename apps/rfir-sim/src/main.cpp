@@ -1,4 +1,4 @@
-/* rfir-sim: simulates one run of the seeds' setups from an INI file and writes
+/* rfir-sim: simulates one run of the papers' setups from an INI file and writes
  * its rawlog and ground truth. See docs/simulator.md. */
 #include <rfir/common/cli.h>
 #include <rfir/common/ini_override.h>

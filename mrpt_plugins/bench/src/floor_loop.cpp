@@ -1,8 +1,9 @@
 /* rfir-bench: the floor, the cheapest honest loop one robot-filter update
- * needs with M particles (issue 11 item 7): per particle one fast Gaussian
+ * needs with M particles: per particle one fast Gaussian
  * draw of the odometry noise (three normals from the run's generator through
  * one Cholesky factor computed per step), one pose composition and one
- * detection likelihood (SPEC section 2), over contiguous arrays. No MRPT
+ * detection likelihood (the PF-SLAM paper's step model, eq. 5;
+ * docs/bibliography.md [2]), over contiguous arrays. No MRPT
  * sampler: MRPT's fastDrawSingleSample costs about 5 x this whole loop and
  * would hide the gap. Every figure is read as a multiple of it. */
 #include <rfir/bench/bench.h>

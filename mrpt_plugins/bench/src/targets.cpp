@@ -132,8 +132,8 @@ TTarget memoryShape(const TBenchReport& r) {
 }
 
 /** Heap per mapped tag (the whole state over N at the largest N, and per
- * extra tag between the two largest N) against a bound (issue 11: 8 KB for
- * PS-SLAM, 2 KB for PF-SLAM, at L = 100 and lag 25). */
+ * extra tag between the two largest N) against a bound (8 KB for PS-SLAM,
+ * 2 KB for PF-SLAM, at L = 100 and lag 25: a million tags fit in memory). */
 TTarget tagBytes(const TBenchReport& r, const std::string& method,
                  const std::string& label, double limit) {
     TTarget t;
@@ -250,7 +250,7 @@ TTarget wholeProcess(const TBenchReport& r) {
     if (x->mrptStartupCpuSeconds > 0)
         t.detail +=
             fmt(" (MRPT's rawlog-edit --version: %.2f s)", x->mrptStartupCpuSeconds);
-    // The issue's own figures: 0.5 s against its plain program's 0.19 s.
+    // The bar's own figures: 0.5 s against its plain program's 0.19 s.
     if (x->plainCpuSeconds > 0)
         t.detail +=
             fmt("; side by side, rfir-plain-ps (the plain reference as a program, "

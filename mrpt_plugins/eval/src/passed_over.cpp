@@ -72,7 +72,7 @@ std::set<std::string> tagsPassedOver(const rfir::common::TMapFile& gt,
         grid.forEachAround(p.x(), p.y(), [&](const TMapEntry* t) {
             const TMapEntry& tag = *t;
             if (seen.count(tag.id)) return;
-            // The SLAM read model (SPEC section 2: e = tag - reader centre).
+            // The SLAM read model (e = tag - reader centre, in the robot frame).
             for (const auto& r : readers) {
                 const auto e =
                     rfir::models::readModel(pose, c, s, r.x, r.y, {tag.x, tag.y});

@@ -1,4 +1,4 @@
-/* The path-and-map figure of the seeds (thesis figs. 3.10, 3.11, 4.2, 4.3). */
+/* The path-and-map figure of the papers (thesis figs. 3.10, 3.11, 4.2, 4.3). */
 #include "plot_internal.h"
 
 #include <mrpt/math/CMatrixFixed.h>

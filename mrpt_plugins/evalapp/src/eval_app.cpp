@@ -1,5 +1,5 @@
 /* rfir-eval: errors of an estimated path and map against the ground truth, in
- * the seeds' table layout (mm, rad) and as one JSON line; optional PNG figure. */
+ * the papers' table layout (mm, rad) and as one JSON line; optional PNG figure. */
 #include <rfir/evalapp/eval_app.h>
 
 #include <rfir/common/atomic_file.h>

@@ -1,5 +1,5 @@
 /* rfir-experiments: PNG figures: path/map panels of the first seed (one per
- * method, side by side, as the seeds' figs. 3.10, 4.2), sweep line plots
+ * method, side by side, as the thesis' figs. 3.10, 4.2), sweep line plots
  * (thesis figs. 3.6, 4.4) and the kidnapping error over time (fig. 3.12). */
 #include <rfir/experiments/report.h>
 

@@ -1,5 +1,5 @@
 /* rfir-experiments: results.md: our numbers (mean +- std over seeds) beside
- * the seeds' numbers, row by row, with the figures. */
+ * the papers' numbers, row by row, with the figures. */
 #include <rfir/experiments/report.h>
 
 #include <algorithm>
@@ -61,7 +61,7 @@ bool pairedTie(const TRowResults& r, const std::string& a, const std::string& b,
     return std::abs(s.mean) < 2 * s.sd / std::sqrt(double(s.n));
 }
 
-/** The ordering of methods by `get` (ours) against the seeds' ordering;
+/** The ordering of methods by `get` (ours) against the papers' ordering;
  * "≈" joins neighbours whose order our seeds do not resolve (pairedTie). */
 std::string orderingCheck(const TRowResults& r, const char* what,
                           double TSeedNumbers::*seedField, const TGetter& get) {
@@ -146,7 +146,7 @@ std::string seedList(const TRowResults& r) {
     return o;
 }
 
-/** One line per table row: ours (mean over seeds) with the seeds' numbers below. */
+/** One line per table row: ours (mean over seeds) with the papers' numbers below. */
 std::string summary(const std::vector<TRowResults>& rows) {
     const std::vector<std::string> methods{"PS-SLAM", "PF-SLAM", "FastSLAM",
                                            "Dead reckoning"};

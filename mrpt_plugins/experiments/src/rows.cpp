@@ -1,6 +1,6 @@
-/* rfir-experiments: the rows of SPEC section 9 with the seeds' numbers.
- * Seeds: thesis (000) tables 3.1, 3.2, 4.1, 4.2, fig. 4.4, 3.6, 4.1 and
- * section 3.4.3; PS-SLAM paper (004) tables 4, 6, 7. */
+/* rfir-experiments: the rows of the papers' experiments with their numbers:
+ * the thesis' tables 3.1, 3.2, 4.1, 4.2, figs. 4.4, 3.6, 4.1 and section
+ * 3.4.3; the PS-SLAM paper's tables 4, 6, 7 (docs/bibliography.md [1] [3]). */
 #include <rfir/experiments/experiment.h>
 
 #include <string>

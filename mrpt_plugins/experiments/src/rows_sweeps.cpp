@@ -65,9 +65,9 @@ TRow particleSweep() {
     return r;
 }
 
-/** The seeds do not give their odometry noise: a setup with the stock INI's
- * odometry noise (every [odometry] parameter) scaled. Run on the two setups of
- * the issue's accuracy bars, it shows whether any one level meets both. */
+/** The papers do not give their odometry noise: a setup with the stock INI's
+ * odometry noise (every [odometry] parameter) scaled. Run on the 60 mm and
+ * the 300 mm setups, it shows whether any one level suits both. */
 TRow odometrySweep(const std::string& id, const std::string& ini,
                    const std::string& setup) {
     TRow r;
@@ -111,11 +111,11 @@ TRow kidnapRow() {
     return r;
 }
 
-/** The robot-update policy (the map's robot_update): 003 Algorithm 1 as
- * written ("literal": update the tag with this detection, then weigh the robot
- * with it, so the detection counts twice) against weighing with the estimate
- * from before the visit ("revisit": first read of a visit; "revisit_all":
- * every read of a visit). */
+/** The robot-update policy (the map's robot_update): the PF-SLAM paper's
+ * Algorithm 1 as written ("literal": update the tag with this detection, then weigh the
+ * robot with it, so the detection counts twice) against weighing with the estimate from
+ * before the visit ("revisit": first read of a visit; "revisit_all": every read of a
+ * visit). */
 TRow policyRow(const std::string& id, const std::string& title, const std::string& ini) {
     TRow r;
     r.id = id;

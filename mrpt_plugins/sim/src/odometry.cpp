@@ -1,8 +1,9 @@
 /* rfir-sim: wheel odometry noise. Variances proportional to the distance
  * travelled and to the rotation (a random walk per metre, so the drift does not
  * depend on the step length), plus per-run scale and heading biases: the
- * systematic errors of real wheels (radius, wheel base). The seeds give no
- * odometry model; their motion model (SPEC 3) is V dt + eps dt. */
+ * systematic errors of real wheels (radius, wheel base). The papers give no
+ * odometry model; their motion model (the PF-SLAM paper's eq. 7) is
+ * V dt + eps dt. */
 #include "odometry.h"
 #include "world.h"
 

@@ -1,5 +1,5 @@
 /* rfir-sim: rectangular loops, five predefined shapes and random waypoint
- * paths (thesis 3.4.1, 4.4.1, 4.4.2; paper 004 section 4), with or without
+ * paths (thesis 3.4.1, 4.4.1, 4.4.2; the PS-SLAM paper's section 4), with or without
  * rotation, with optional stops at marked spots (thesis 5.4.2). */
 #include "trajectory.h"
 

@@ -52,7 +52,7 @@ struct TFaultContext {
 };
 
 /** One RFID poll of the readers `which` (empty: all), with the tags inside
- * each square (SPEC 2, the step model), each missed with
+ * each square (the step model of the PF-SLAM paper's eq. 5), each missed with
  * cfg.rfid.missProbability; plus the faults (dead readers, ghosts, empty
  * polls omitted). nullptr when nothing is left to write. */
 rfir::obs::CObservationRFIDReaders::Ptr senseRFID(const TSimConfig& cfg, const TWorld& w,
@@ -68,7 +68,7 @@ rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorl
                                               rfir::sim::TSimRandom& rng,
                                               const TFaultContext& f);
 
-/** Range and bearing of every landmark in range and field of view (SPEC 7). */
+/** Range and bearing of every landmark in range and field of view. */
 mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TWorld& w,
                                                  const mrpt::poses::CPose2D& robot,
                                                  rfir::sim::TSimRandom& rng);

@@ -1,4 +1,5 @@
-/* rfir: multi-reader HF RFID observation (SPEC section 1). */
+/* rfir: multi-reader HF RFID observation (the readers under the robot of the
+ * thesis, chapter 3). */
 #pragma once
 
 #include <mrpt/obs/CObservation.h>

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace rfir::ir {
-/** Number of on-off-keying frequencies of the seeds' emitters. */
+/** Number of on-off-keying frequencies of the thesis' emitters. */
 constexpr int kNumCodes = 9;
 /** Frequency in Hz of code c (1..9): 100, 150, 250, 350, 550, 650, 850, 950, 1150. */
 double codeFrequencyHz(int code);

@@ -1,4 +1,4 @@
-/* rfir: accuracy metrics of the seeds' tables (thesis tables 3.1, 3.2, 4.1,
+/* rfir: accuracy metrics of the papers' tables (thesis tables 3.1, 3.2, 4.1,
  * 4.2, 5.2; PS-SLAM paper tables 3-7): mean and max of |dx|, |dy|, |dtheta|
  * and distance, for the robot path and for the mapped landmarks.
  * Units: metres and radians (tables convert to mm). */
@@ -91,7 +91,7 @@ void checkPath(const rfir::common::TPath2D& p, const std::string& what);
 /** How estimated and true poses are paired. */
 enum class Association {
     /** Each estimated pose against the truth interpolated at its time (the
-     * seeds' tables: errors along the whole estimated path). */
+     * papers' tables: errors along the whole estimated path). */
     AtEstimateTimes,
     /** Each true pose against the estimate interpolated at its time: for a
      * sparse ground truth such as the IR experiment's marked spots

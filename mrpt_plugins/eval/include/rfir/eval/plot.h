@@ -1,5 +1,5 @@
 /* rfir: PNG figures drawn with mrpt::img::CImage: the path-and-map figure of
- * the seeds (thesis figs. 3.10, 4.2; PS-SLAM paper figs. 5-10) and line plots
+ * the papers (thesis figs. 3.10, 4.2; PS-SLAM paper figs. 5-10) and line plots
  * for parameter sweeps. Files are written atomically. */
 #pragma once
 
@@ -33,7 +33,7 @@ struct TPlotPath {
     unsigned width = 2;
 };
 
-/** The path-and-map figure. Styles follow the seeds: ground-truth path blue,
+/** The path-and-map figure. Styles follow the papers: ground-truth path blue,
  * estimated path red, odometry grey; ground-truth tags/landmarks purple dots,
  * estimated ones green circles (with 2-sigma ellipses from sx, sy); emitters
  * orange squares. Entries of the maps of every kind are drawn. */

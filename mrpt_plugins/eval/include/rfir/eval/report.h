@@ -1,4 +1,4 @@
-/* rfir: error tables in the seeds' layout (mm and rad) and one-line JSON. */
+/* rfir: error tables in the papers' layout (mm and rad) and one-line JSON. */
 #pragma once
 
 #include <rfir/eval/metrics.h>

@@ -1,5 +1,5 @@
 /* rfir: trajectory metrics as evo and the TUM benchmark report them, beyond
- * the seeds' unaligned mean/max: the absolute pose error after a closed-form
+ * the papers' unaligned mean/max: the absolute pose error after a closed-form
  * SE(2) (or Sim(2)) alignment of the estimate onto the truth (Umeyama 1991,
  * Horn 1987, in the plane), and the relative pose error over a fixed travelled
  * distance or time. Units: metres and radians. */

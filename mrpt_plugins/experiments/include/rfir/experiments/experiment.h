@@ -1,6 +1,7 @@
-/* rfir-experiments: the experiment rows of SPEC section 9 (the seeds' tables
- * and figures) as data: which simulated setup, which methods, which sweep
- * points, and the numbers the seeds report for it. */
+/* rfir-experiments: the experiment rows (the tables and figures of the thesis
+ * and the PS-SLAM paper, docs/bibliography.md [1] [3]) as data: which
+ * simulated setup, which methods, which sweep points, and the numbers the
+ * papers report for it. */
 #pragma once
 
 #include <cmath>
@@ -20,7 +21,7 @@ struct TMethodSpec {
     std::vector<std::string> edits;
 };
 
-/** A seed table's row (mm, rad); NaN where the seed gives no number. */
+/** A row of a table of the papers (mm, rad); NaN where they give no number. */
 struct TSeedNumbers {
     std::string label;  //!< method as in our rows
     double x = kNaN, y = kNaN, theta = kNaN, dr = kNaN;

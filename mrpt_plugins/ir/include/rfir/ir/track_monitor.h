@@ -1,4 +1,4 @@
-/* rfir: what keeps the IR localization from being lost (issue 12 item 6):
+/* rfir: what keeps the IR localization from being lost (docs/ir.md, "Faults"):
  * readings gated by the motion prior, per-emitter health (emitters that never
  * answer, emitters whose readings contradict the map) and lost-track
  * detection from unique IDs that keep contradicting the track. The localizer

@@ -29,7 +29,7 @@ struct TRunMetrics {
     double seconds = 0;  //!< filter wall-clock time
 };
 
-/** Shared settings of a session. */
+/** Settings shared by every run of one rfir-ir-experiments call. */
 struct TSession {
     std::string configDir;  //!< config_ini of the source tree
     std::string workDir;    //!< rawlogs and per-run outputs
@@ -48,7 +48,7 @@ struct TSession {
  * blame, else the INI's own error "FILE: [section] key: why". */
 void setEdits(TSession& s, const std::vector<std::string>& sets);
 
-/** One line on stderr naming the experiment being run (verbose sessions). */
+/** One line on stderr naming the experiment being run (unless quiet). */
 void progress(const TSession& s, const std::string& what);
 
 /** Simulates (once per spec and seed: cached in workDir), localizes through

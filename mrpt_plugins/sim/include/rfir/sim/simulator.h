@@ -1,4 +1,4 @@
-/* rfir: the simulator of the seeds' setups (SPEC sections 1, 7, 8, 9): an
+/* rfir: the simulator of the papers' setups (docs/simulator.md): an
  * omnidirectional robot with 8 HF RFID readers over a tag carpet, two IR
  * receivers under a ceiling emitter lattice, a range-and-bearing sensor.
  *
@@ -192,7 +192,8 @@ struct TIRConfig {
     double voltOutlierMax = 4;
 };
 
-/** Range-and-bearing sensor and landmarks ([range_bearing] section), SPEC 7. */
+/** Range-and-bearing sensor and landmarks ([range_bearing] section; the
+ * PS-SLAM paper's section 4.2). */
 struct TRBConfig {
     bool enabled = false;
     double density = 4;         //!< landmarks per m^2, uniform over the area
@@ -200,7 +201,7 @@ struct TRBConfig {
     double sigmaBearing = 0.05235987755982989;  //!< rad (3 deg)
 };
 
-/** Every parameter of a run; the defaults are the seeds' 60 mm / 16 tags/m^2
+/** Every parameter of a run; the defaults are the papers' 60 mm / 16 tags/m^2
  * rectangular loop (x3). Sections (the INI of a run): [simulation], [robot],
  * [trajectory], [kidnap], [odometry], [rfid], [ir], [range_bearing]. */
 struct TSimConfig : public mrpt::config::CLoadableOptions {

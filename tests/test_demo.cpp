@@ -8,8 +8,8 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdlib>

@@ -26,6 +26,13 @@ if ! command -v rawlog-edit > /dev/null; then
   sed -i 's/^rawlog-edit /echo "(skipped: no rawlog-edit)" rawlog-edit /' tutorial.sh
 fi
 
+# In the sanitizer build (scripts/sanitize.sh) MRPT's uninstrumented
+# programs get the sanitizer runtimes preloaded, else they cannot load the
+# instrumented plugin.
+if [ -n "${RFIR_SANITIZER_PRELOAD:-}" ]; then
+  sed -i 's/^rawlog-edit /LD_PRELOAD="$RFIR_SANITIZER_PRELOAD" rawlog-edit /' tutorial.sh
+fi
+
 failures=0
 fail() {
   echo "FAIL: $*"

@@ -4,3 +4,14 @@
 add_test(NAME docs_links
   COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/check_links.sh ${CMAKE_SOURCE_DIR})
 set_tests_properties(docs_links PROPERTIES TIMEOUT 60)
+
+# The measured numbers of the README and the manual that a quick command
+# gives (the demo's table, rfir-ids' counts, the IR odometry level, ...):
+# scripts/docs_numbers.py reruns the commands on this build's programs and
+# fails with a diff and the command that rewrites the pages
+# (docs/README.md, "How the numbers stay true"). Debian's python3: CI has
+# only that one.
+add_test(NAME docs_numbers
+  COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/scripts/docs_numbers.py --check
+          --bin $<TARGET_FILE_DIR:rfir-slam>)
+set_tests_properties(docs_numbers PROPERTIES TIMEOUT 120)

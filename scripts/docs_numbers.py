@@ -22,7 +22,8 @@ pages link to them.
 Commands run: scripts/demo_run.sh (rfir-slam PF/PS/FastSLAM, seed 1, on
 datasets/rfid_60mm_16tags_loop, and rfir-eval), rfir-ids, rfir-sim and
 rfir-eval on config_ini/sim_ir_loop.ini seeds 1-5, rfir-import on the loop
-dataset. Exit codes: 0 pages agree (or rewritten), 1 a page differs or a
+dataset, the test program test_tagmaps (TagMapAccuracy prints the tag
+errors of docs/tag-maps.md). Exit codes: 0 pages agree (or rewritten), 1 a page differs or a
 command failed, 2 bad command line."""
 import argparse
 import difflib
@@ -93,6 +94,16 @@ class Sources:
             means.append(j["dead_reckoning"]["mean_dist"])
         return sum(means) / len(means)
 
+    def _tag_accuracy(self):
+        """The tag-map errors TagMapAccuracy prints (test_tagmaps)."""
+        out = self.run([self.prog("test_tagmaps"),
+                        "--gtest_filter=TagMapAccuracy.FilterAndSmootherOnSmallAndLargeReaders"])
+        m = re.search(r"60 mm: PF ([\d.]+) mm, PS ([\d.]+) mm; 300 mm: PF ([\d.]+) mm, "
+                      r"PF\+roughening ([\d.]+) mm, PS ([\d.]+) mm", out)
+        if not m:
+            raise RuntimeError("test_tagmaps printed no TagMapAccuracy line:\n" + out)
+        return m.groups()
+
     def _loop_reads(self):
         """Reads per reader poll on datasets/rfid_60mm_16tags_loop."""
         txt = os.path.join(self.tmp, "loop.txt")
@@ -122,6 +133,13 @@ def demo_table(src):
         rows.append(f"| {label} | {mm(rb['mean_dist'])} / {mm(rb['max_dist'])} | "
                     f"{mm(rb['rmse_dist'])} | {mm(rb['aligned']['rmse_dist'])} | {tags} |")
     return "\n" + "\n".join(rows) + "\n"  # blank lines: the table stands alone
+
+
+def tag_accuracy(src):
+    pf60, ps60, pf300, pfr300, ps300 = src.get("tag_accuracy")
+    return "\n".join(["", "| reader | PF (literal) | PF + roughening 1 mm | PS |",
+                      "| --- | --- | --- | --- |", f"| 60 mm | {pf60} | - | {ps60} |",
+                      f"| 300 mm | {pf300} | {pfr300} | {ps300} |", ""])
 
 
 def demo_same(key):
@@ -181,6 +199,7 @@ def plain(key):
 # Generated blocks: page -> {name: (producer, numeric tolerance)}.
 BLOCKS = {
     "README.md": {"demo_table": (demo_table, 0.15)},
+    "docs/tag-maps.md": {"tag_accuracy": (tag_accuracy, 0)},
 }
 
 # Inline numbers: (page, pattern whose group 1 is the number, producer, tolerance).
@@ -257,7 +276,7 @@ def main():
                     help="folder of the rfir programs (default: build/bin)")
     a = ap.parse_args()
     bindir = os.path.abspath(a.bin)
-    for p in ("rfir-slam", "rfir-eval", "rfir-ids", "rfir-sim", "rfir-import"):
+    for p in ("rfir-slam", "rfir-eval", "rfir-ids", "rfir-sim", "rfir-import", "test_tagmaps"):
         if not os.access(os.path.join(bindir, p), os.X_OK):
             ap.error(f"--bin {a.bin}: no program {p} (build it first)")
     pages = sorted(set(BLOCKS) | {f[0] for f in FACTS})

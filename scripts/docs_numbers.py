@@ -175,6 +175,29 @@ def curve_zero_mm(_):
     return f"{1e3 * (-C1 - math.sqrt(C1 * C1 - 4 * C2 * C0)) / (2 * C2):.0f}"
 
 
+def ini_value(path, key):
+    """A key's value in one of the stock INIs (the first `key = value` line)."""
+    for line in open(os.path.join(ROOT, path)):
+        m = re.match(rf"\s*{key}\s*=\s*([^\s;#]+)", line)
+        if m:
+            return float(m.group(1))
+    raise RuntimeError(f"{path}: no key {key}")
+
+
+def volt_outlier_cost(_):
+    """The most one reading costs under the stock voltage mixture (docs/ir.md)."""
+    ini = "config_ini/ir_localize.ini"
+    w, rng, s = (ini_value(ini, k) for k in ("volt_outlier_weight", "volt_outlier_range", "sigma_volts"))
+    return f"{-math.log(w * math.sqrt(2 * math.pi) * s / rng):.1f}"
+
+
+def volt_plain_cost(_):
+    """Eq. 5.2 alone, a reading at the mixture's range under the curve's peak."""
+    ini = "config_ini/ir_localize.ini"
+    rng, s = ini_value(ini, "volt_outlier_range"), ini_value(ini, "sigma_volts")
+    return f"{(rng - float(curve_peak_volts(None))) ** 2 / (2 * s * s):.0f}"
+
+
 def ir_odometry_mm(src):
     v = src.get("ir_odometry")
     if abs(1e3 * v - 108) > 10.8:  # the rule: the thesis' 108 mm within +-10 %
@@ -218,6 +241,8 @@ FACTS = [
     ("docs/ir.md", r"It peaks at ([\d.]+) mm", curve_peak_mm, 0),
     ("docs/ir.md", r"It peaks at [\d.]+ mm \(([\d.]+) V\)", curve_peak_volts, 0),
     ("docs/ir.md", r"reaches 0 at (\d+)\s+mm", curve_zero_mm, 0),
+    ("docs/ir.md", r"at most about ([\d.]+) \(log:", volt_outlier_cost, 0),
+    ("docs/ir.md", r"\(2 sigma\^2\), (\d+) for a 4 V reading", volt_plain_cost, 0),
     ("docs/simulator.md", r"seeds 1-5\s+is\s+([\d.]+) mm", ir_odometry_mm, 0.15),
     ("docs/simulator.md", r"about\s+([\d.]+)\s+reads\s+per\s+poll", lambda s: f"{s.get('loop_reads'):.2f}", 0),
     ("docs/hardening.md", r"mrpt_only_segv\.rawlog` \((\d+) bytes", file_size("tests/data/repro/mrpt_only_segv.rawlog"), 0),

@@ -339,7 +339,7 @@ TEST(LongProfile, FloorWithoutResets) {
 // robot_negative_information). Seeds 1-3: the bar (PF and PS beat the
 // odometry, within 1.25 x FastSLAM, no reset), and the option at least
 // halves the mean robot error (measured: PF 1191 -> 267, PS 1116 -> 299 mm,
-// summed over the seeds).
+// summed over the three random seeds).
 TEST(StockInis, LawnmowerNeedsTheRobotsNegativeInformation) {
     const auto c = stockSimIni("sim_rfid_300mm_lawnmower.ini");
     const TEdits off = {{"tagmap_likelihood.robot_negative_information", "0"}};

@@ -67,7 +67,7 @@ TEST(SlamAccuracy, Rfid300mmOrdering) {
 // values PF 33.1 / 35.3 mm).
 // KNOWN GAP, disabled in CI (run it with --gtest_also_run_disabled_tests).
 // The thresholds and assertions below are the issue's, fixed before tuning,
-// and are not changed. Under the simulator's odometry noise (the seeds'
+// and are not changed. Under the simulator's odometry noise (the papers'
 // zero-mean model, level calibrated to the thesis's 108 mm odometry-only
 // error; docs/simulator.md) they are not met. Measured on the test's seeds
 // (robot / tags, mm): PF 110.8 / 110.8, PS 110.6 / 109.9

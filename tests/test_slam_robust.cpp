@@ -58,7 +58,7 @@ double essShare(const std::vector<double>& lw) {
 // without the mixture the tag's particles collapse to the square's edge
 // nearest the ghost (thresholds: a drag above 10 mm); with outlier_weight
 // 0.005 it moves under 2 mm. The read is counted as contradicted either way.
-// The mixture alone: [tagmap] hold_outvoted (stock since session 18) would
+// The mixture alone: [tagmap] hold_outvoted (on in the stock INIs) would
 // keep the read from the tag in both runs (TagMapReseat.OutvotedRead...).
 TEST(OutlierReads, GhostReadDragsTheTagOnlyWithoutTheMixture) {
     for (const double eps : {0.0, 0.005}) {

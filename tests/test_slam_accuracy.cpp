@@ -135,8 +135,8 @@ double afterKidnap(const TResult& r, const rfir::sim::TSimConfig& c) {
 // Thesis 3.4.3: the robot is carried, without odometry, to a place mapped
 // earlier; PF-SLAM must reset. Without sensor resetting it must not recover
 // (so that the scenario is a real kidnapping). Run with revisit_min_travel =
-// 0, the stock value until 67a240f; the stock settings' recovery is
-// PFRecoversWithStockSettings below.
+// 0 (every read after a gap weighs the robot); the stock settings' recovery
+// is PFRecoversWithStockSettings below.
 TEST(SlamKidnap, PFResets) {
     const auto simCfg = kidnapSetup();
     const auto sim = rfir::sim::simulate(simCfg, 3);

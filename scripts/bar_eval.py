@@ -247,8 +247,8 @@ def cmd_table(a):
     methods = sorted({m for _, m in A}, key=["pf", "ps", "fastslam", "odometry"].index)
     scen = [s for s in ALL if any((s, m) in A for m in methods)]
     hdr = "| scenario | odometry | " + " | ".join(methods) + " |"
-    print("Median robot mean error over the seeds, mm (rN: relocations summed over the "
-          "seeds; kA/B: kidnappings recovered within 5 s; sm: smoothed)" +
+    print("Median robot mean error over the random seeds, mm (rN: relocations summed "
+          "over the random seeds; kA/B: kidnappings recovered within 5 s; sm: smoothed)" +
           (f"; each cell this / {a.vs}" if B else ""))
     print()
     print(hdr)

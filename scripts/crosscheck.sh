@@ -3,8 +3,8 @@
 # scripts/crosscheck/textlog_sim.py (not rfir-sim), imported with rfir-import,
 # run with the stock INIs of PF-SLAM, PS-SLAM and FastSLAM, scored with
 # rfir-eval (dead reckoning from the rawlog's odometry). Prints one markdown
-# row per scenario: mean robot / tag error in mm over the seeds (PF-SLAM also
-# after rfir-slam --smooth), and the kidnap resets summed over the seeds.
+# row per scenario: mean robot / tag error in mm over the random seeds (PF-SLAM also
+# after rfir-slam --smooth), and the kidnap resets summed over the random seeds.
 #
 #   bash scripts/crosscheck.sh [--seeds N] [--out DIR] [--config-dir DIR] [--scenarios a,b]
 # --config-dir defaults to config_ini (the stock INIs as in the source tree);
@@ -50,7 +50,7 @@ declare -A SC=(
 )
 ORDER="loop60 async60 slow60 epoch60 rect4 line100 rand300 spin300 big300 kid60 kid300 faults60 faults300 lawn300 rr60 explore60"
 [ -n "$ONLY" ] && ORDER=${ONLY//,/ }
-[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
+[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck.sh: --seeds must be a positive integer, got '${SEEDS}'" >&2; exit 2; }
 for m in pf ps fastslam; do
   [ -f "$CFGDIR/slam_$m.ini" ] || { echo "crosscheck.sh: $CFGDIR/slam_$m.ini missing (--config-dir)" >&2; exit 2; }
 done

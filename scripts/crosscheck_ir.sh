@@ -21,7 +21,7 @@ while [ $# -gt 0 ]; do
     *) echo "crosscheck_ir.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
   esac
 done
-[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck_ir.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
+[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "crosscheck_ir.sh: --seeds must be a positive integer, got '${SEEDS}'" >&2; exit 2; }
 command -v python3 >/dev/null || { echo "crosscheck_ir.sh: needs python3" >&2; exit 1; }
 for p in rfir-import rfir-localize; do
   [ -x "$BIN/$p" ] || { echo "crosscheck_ir.sh: $BIN/$p missing: build first (bash scripts/demo.sh)" >&2; exit 1; }

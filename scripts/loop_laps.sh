@@ -3,7 +3,7 @@
 # config_ini/sim_rfid_60mm_16tags_loop.ini (3 laps), PF-SLAM, PS-SLAM and
 # FastSLAM with their stock INIs, rfir-eval --segments 3 (one window per lap).
 # Prints a markdown table: mean robot error per lap and over the run, mm,
-# averaged over the seeds, with dead reckoning.
+# averaged over the random seeds, with dead reckoning.
 #
 #   bash scripts/loop_laps.sh [--seeds N] [--out-dir DIR]
 # Runs the stock INIs as they are in config_ini/ (not the build copy);
@@ -23,7 +23,7 @@ while [ $# -gt 0 ]; do
     *) echo "loop_laps.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
   esac
 done
-[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "loop_laps.sh: --seeds must be a positive integer, got '$SEEDS'" >&2; exit 2; }
+[[ "$SEEDS" =~ ^[1-9][0-9]*$ ]] || { echo "loop_laps.sh: --seeds must be a positive integer, got '${SEEDS}'" >&2; exit 2; }
 command -v python3 >/dev/null || { echo "loop_laps.sh: needs python3 (apt-get install python3)" >&2; exit 1; }
 for p in rfir-sim rfir-slam rfir-eval; do
   [ -x "$BIN/$p" ] || { echo "loop_laps.sh: $BIN/$p missing: build first (bash scripts/demo.sh)" >&2; exit 1; }

@@ -142,9 +142,8 @@ TEST(HeadingDrift, PriorAndWalkHaveTheirStds) {
 
 // The 40-minute exploration of a 10 x 8 m room, seed 3: its per-run odometry
 // drifts by about 0.011 rad/m (twice the simulator's heading_drift_sigma), and
-// the filters without a drift state lose the robot between revisits (with
-// the former stock INI PS 351 mm with 27 resets, with the current one 151 mm;
-// FastSLAM 3212 mm; docs/slam.md). With the drift state
+// the filters without a drift state lose the robot between revisits
+// (docs/slam.md, "Odometry with a heading drift"). With the drift state
 // (std 0.003 rad/m, walk 0.0002): each method's mean error at most half of
 // its error without it, and PS and FastSLAM without a reset.
 TEST(HeadingDrift, LongExplorationStaysWithTheRobot) {
@@ -158,23 +157,21 @@ TEST(HeadingDrift, LongExplorationStaysWithTheRobot) {
 // (a3 = 0.06 rad/m, 1.5 x the simulator's odometry noise at 0.02 m steps)
 // covers more of the drift between revisits, and read_confirm_window (0.5 s)
 // keeps the wider cloud from following ghost reads (docs/slam.md, "The
-// motion noise's level"). The former stock settings (a3 = 0.02, no
-// confirmation) reset PF 41 and PS 27 times here. Thresholds, stated before
-// the change was measured: no reset, and each method's mean error at most
-// half of the former settings'.
-// Both runs without the loop closures by smoothing, which came later: they
-// take the former settings' triggers for loop closures, and those settings
-// then end at 112 mm (PF) with no reset (docs/slam.md, "Loop closure by
-// smoothing"); the comparison here is of the motion settings under the
+// motion noise's level"). The narrow settings (a3 = 0.02, no confirmation)
+// reset many times here. Thresholds, stated before the measurement: no
+// reset, and each method's mean error at most half of the narrow settings'.
+// Both runs without the loop closures by smoothing, which would take the
+// narrow settings' triggers for loop closures (docs/slam.md, "Loop closure
+// by smoothing"): the comparison here is of the motion settings under the
 // resetting.
 TEST(StockInis, LongExplorationWithoutResets) {
     const TEdits stock = {{"kidnap.loop_closure_smoothing", "false"}};
-    const TEdits former = {{"motion.a3", "0.02"},
+    const TEdits narrow = {{"motion.a3", "0.02"},
                            {"slam.read_confirm_window", "0"},
                            {"kidnap.loop_closure_smoothing", "false"}};
     for (const char* m : {"pf", "ps"})
-        expectHalfTheErrorWithoutResets(m, stock, former, "stock",
-                                        "with the former settings");
+        expectHalfTheErrorWithoutResets(m, stock, narrow, "stock",
+                                        "with the narrow settings");
 }
 
 // sim_faults_ghost seed 3 (1 % ghost reads, 0.2-0.6 m away): with the drift
@@ -339,7 +336,7 @@ TEST(LongProfile, FloorWithoutResets) {
 // robot_negative_information). Seeds 1-3: the issue's bar (PF and PS beat the
 // odometry, within 1.25 x FastSLAM, no reset), and the option at least
 // halves the mean robot error (measured: PF 1191 -> 267, PS 1116 -> 299 mm,
-// summed over the seeds).
+// summed over the three random seeds).
 TEST(StockInis, LawnmowerNeedsTheRobotsNegativeInformation) {
     const auto c = stockSimIni("sim_rfid_300mm_lawnmower.ini");
     const TEdits off = {{"tagmap_likelihood.robot_negative_information", "0"}};

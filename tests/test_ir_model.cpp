@@ -7,8 +7,8 @@
 
 using namespace rfir::ir;
 
-// Eq. 5.3 in metres equals the seed's millimetre form.
-TEST(IRModel, CurveMatchesSeedInMillimetres) {
+// Eq. 5.3 in metres equals the thesis' millimetre form.
+TEST(IRModel, CurveMatchesThesisInMillimetres) {
     const TVoltageCurve c;
     for (double dmm : {0.0, 50.0, 100.0, 200.0, 250.0}) {
         const double seed = -3.27e-5 * dmm * dmm + 2.855e-3 * dmm + 1.81997;
@@ -69,7 +69,7 @@ TEST(IRModel, ReadingLikelihood) {
     EXPECT_NEAR(readingLogLikelihood(1.0, {0, 0}, e, 1.2, p), -58.0, 1e-9);
     e.x = 0.305;  // 0.025 m past the visible radius: half the out-of-range term
     EXPECT_NEAR(readingLogLikelihood(1.0, {0, 0}, e, 1.2, p), -50.0 - 4.0, 1e-9);
-    p.outOfRangeLogLik = 0;  // the seed's eq. 5.2 alone
+    p.outOfRangeLogLik = 0;  // the thesis' eq. 5.2 alone
     e.x = 0.4;
     EXPECT_NEAR(readingLogLikelihood(1.0, {0, 0}, e, 1.2, p), -50.0, 1e-9);
 }

@@ -143,7 +143,7 @@ TEST(ReadNoise, OutlierMixtureBoundsTheCostOfAFarRead) {
     const double ll = step.logLik(0.05, 0.01, 0.03, 0.03);
     EXPECT_NEAR(mix(0.05, 0.01),
                 std::log((1 - eps) * std::exp(ll) + eps * std::exp(floor)), 1e-12);
-    // Through DetectionLikelihood: off by default (the seeds' model), on with eps.
+    // Through DetectionLikelihood: off by default (the papers' model), on with eps.
     DetectionModelParams p;
     EXPECT_EQ(DetectionLikelihood(p).logLikelihoodOffset(3, 0, 0.03, 0.03),
               step.logLik(3, 0, 0.03, 0.03));

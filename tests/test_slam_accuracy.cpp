@@ -67,7 +67,7 @@ TEST(SlamAccuracy, Rfid300mmOrdering) {
 // values PF 33.1 / 35.3 mm).
 // KNOWN GAP, disabled in CI (run it with --gtest_also_run_disabled_tests).
 // The thresholds and assertions below are the issue's, fixed before tuning,
-// and are not changed. Under the simulator's odometry noise (the seeds'
+// and are not changed. Under the simulator's odometry noise (the papers'
 // zero-mean model, level calibrated to the thesis's 108 mm odometry-only
 // error; docs/simulator.md) they are not met. Measured on the test's seeds
 // (robot / tags, mm): PF 110.8 / 110.8, PS 110.6 / 109.9
@@ -135,8 +135,8 @@ double afterKidnap(const TResult& r, const rfir::sim::TSimConfig& c) {
 // Thesis 3.4.3: the robot is carried, without odometry, to a place mapped
 // earlier; PF-SLAM must reset. Without sensor resetting it must not recover
 // (so that the scenario is a real kidnapping). Run with revisit_min_travel =
-// 0, the stock value until 67a240f; the stock settings' recovery is
-// PFRecoversWithStockSettings below.
+// 0 (every read after a gap weighs the robot); the stock settings' recovery
+// is PFRecoversWithStockSettings below.
 TEST(SlamKidnap, PFResets) {
     const auto simCfg = kidnapSetup();
     const auto sim = rfir::sim::simulate(simCfg, 3);

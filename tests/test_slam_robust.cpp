@@ -58,7 +58,7 @@ double essShare(const std::vector<double>& lw) {
 // without the mixture the tag's particles collapse to the square's edge
 // nearest the ghost (thresholds: a drag above 10 mm); with outlier_weight
 // 0.005 it moves under 2 mm. The read is counted as contradicted either way.
-// The mixture alone: [tagmap] hold_outvoted (stock since session 18) would
+// The mixture alone: [tagmap] hold_outvoted (on in the stock INIs) would
 // keep the read from the tag in both runs (TagMapReseat.OutvotedRead...).
 TEST(OutlierReads, GhostReadDragsTheTagOnlyWithoutTheMixture) {
     for (const double eps : {0.0, 0.005}) {
@@ -380,13 +380,13 @@ TEST(InterpolatedPolls, SparseOdometryOnTheLoop) {
 }
 
 // The offline smoother on the same inputs: a poll at the interpolated odometry
-// carries its share of the interval's noise, as in the filters (it gave
-// every poll the noise floor of an increment of its own, and the chain came
-// loose: 25 -> 60 mm on the cross-check's async60). sim_faults_async (25 Hz
+// carries its share of the interval's noise, as in the filters (the noise
+// floor of an increment of its own for every poll would loosen the chain).
+// sim_faults_async (25 Hz
 // odometry) with each reader polled at 25 Hz in turn (8 polls per record),
 // 90 s. Threshold, stated before the run: smoothed after interpolated inputs
 // at most 1.1 x (+5 mm) smoothed after the plain ones, PF-SLAM, seeds 1-3.
-// Measured: 31.2 against 32.9 mm (52.6 before the fix).
+// Measured: 31.2 against 32.9 mm.
 TEST(InterpolatedPolls, SmootherOnAsynchronousPolls) {
     auto c = rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) +
                                       "/config_ini/sim_faults_async.ini");

@@ -75,8 +75,8 @@ inline TResult runMethod(const rfir::sim::TSimOutput& sim, rfir::slam::TSlamConf
     return r;
 }
 
-/** The odometry noise of a stock simulator INI: the seed setups use the
- * seeds' zero-mean noise at the calibrated level (docs/simulator.md), the
+/** The odometry noise of a stock simulator INI: the setups of the papers use
+ * the papers' zero-mean noise at the calibrated level (docs/simulator.md), the
  * `_biased` INIs realistic odometry with per-run systematic errors. */
 inline rfir::sim::TOdometryNoise stockOdometry(const std::string& ini) {
     return rfir::sim::loadSimConfig(std::string(RFIR_SOURCE_DIR) + "/config_ini/" + ini)

@@ -48,7 +48,7 @@ TEST(TagMapAccuracy, FilterAndSmootherOnSmallAndLargeReaders) {
     EXPECT_LT(ps60, 0.012);
     EXPECT_LT(pf300, 0.05);
     EXPECT_LT(ps300, 0.05);
-    // The seeds' finding: on large readers the smoother beats the literal PF,
+    // The papers' finding: on large readers the smoother beats the literal PF,
     // whose particles collapse (its reported spread is far below its error).
     EXPECT_LT(ps300, pf300);
 }

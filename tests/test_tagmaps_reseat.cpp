@@ -167,8 +167,8 @@ TEST(TagMapReseat, CountsAndOptionSurviveSerialization) {
 
 // A reseated tag starts over as a tag on its first visit: its placement is
 // the robot's own pose, so the rest of that visit must not weigh the robot
-// against it (until 2026-12-05 it did, the double counting
-// revisit_min_travel keeps out); a later visit does.
+// against it (that would be the double counting revisit_min_travel keeps
+// out); a later visit does.
 TEST(TagMapReseat, ReseatedTagWeighsTheRobotFromTheNextVisitOn) {
     CRFIDTagParticleMap m;
     m.likelihoodOptions.robotUpdate = rfir::maps::TRobotUpdatePolicy::RevisitAll;

@@ -19,7 +19,7 @@ inline rfir::obs::TRFIDReader reader(const std::string& id, double x, double y,
     return r;
 }
 
-/** An 8-reader ring (like the seeds' robot), readers of half-size h. */
+/** An 8-reader ring (like the papers' robot), readers of half-size h. */
 inline std::vector<rfir::obs::TRFIDReader> ring(double h) {
     std::vector<rfir::obs::TRFIDReader> v;
     const double d = std::max(0.1, 2.2 * h);

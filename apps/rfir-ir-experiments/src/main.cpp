@@ -42,7 +42,7 @@ std::set<std::string> onlyList(const std::string& list) {
 }
 
 /** "--seed 5 --set a.b=1" for the header (empty for the defaults). */
-std::string seedAndEdits(const TSession& s, const std::vector<std::string>& sets) {
+std::string seedAndEdits(const TExperimentRun& s, const std::vector<std::string>& sets) {
     std::string t = s.firstSeed == 1 ? "" : " --seed " + std::to_string(s.firstSeed);
     for (const auto& e : sets) t += " --set " + e;
     return t;
@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
         rfir::common::checkFolderOption("--config-dir", cfgDir.getValue());
         rfir::obs::registerAllClasses();
         rfir::maps::registerIRClasses();
-        TSession s;
+        TExperimentRun s;
         s.configDir = fs::absolute(cfgDir.getValue()).string();
         s.workDir = work.isSet() ? work.getValue() : out.getValue() + "/work";
         s.verbose = !quiet.getValue();

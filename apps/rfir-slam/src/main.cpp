@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
         TCLAP::SwitchArg smooth(
             "", "smooth",
             "also smooth the run offline (odometry + RFID reads, from the filter's "
-            "output; beyond the seeds): path_smoothed.tum, map_smoothed.txt, "
+            "output; beyond the papers): path_smoothed.tum, map_smoothed.txt, "
             "path_map_smoothed.png, errors_smoothed.json",
             cmd, false);
         TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);

@@ -19,9 +19,9 @@ TJson rowJson(const TRowResults& rr) {
     j["id"] = row.id;
     j["title"] = row.title;
     j["source"] = row.source;
-    j["seed_claim"] = row.seedClaim;
-    TJson seeds = TJson::array();
-    for (const auto& s : row.seedNumbers) {
+    j["paper_claim"] = row.paperClaim;
+    TJson paper = TJson::array();
+    for (const auto& s : row.paperNumbers) {
         TJson e;
         e["method"] = s.label;
         e["x"] = printed(s.x);
@@ -32,9 +32,9 @@ TJson rowJson(const TRowResults& rr) {
         e["ty"] = printed(s.ty);
         e["dt"] = printed(s.dt);
         e["note"] = s.note;
-        seeds.push_back(e);
+        paper.push_back(e);
     }
-    j["seed_numbers_mm"] = seeds;
+    j["paper_numbers_mm"] = paper;
     j["runs"] = TJson::array();
     for (const auto& r : rr.runs) j["runs"].push_back(TJson::parse(r.entry));
     return j;

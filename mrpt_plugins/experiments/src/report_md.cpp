@@ -25,13 +25,13 @@ std::string fmtPM(const TStat& s, double scale, int digits) {
 }
 
 namespace {
-const TSeedNumbers* seedFor(const TRow& row, const std::string& method) {
-    for (const auto& s : row.seedNumbers)
+const TPaperNumbers* paperFor(const TRow& row, const std::string& method) {
+    for (const auto& s : row.paperNumbers)
         if (s.label == method) return &s;
     return nullptr;
 }
 
-std::string seedCell(const TSeedNumbers* s, double v) {
+std::string paperCell(const TPaperNumbers* s, double v) {
     if (!s || !std::isfinite(v)) return "-";
     return (s->note.empty() ? "" : s->note + " ") + fmt(v, 1);
 }
@@ -64,43 +64,44 @@ bool pairedTie(const TRowResults& r, const std::string& a, const std::string& b,
 /** The ordering of methods by `get` (ours) against the papers' ordering;
  * "≈" joins neighbours whose order our seeds do not resolve (pairedTie). */
 std::string orderingCheck(const TRowResults& r, const char* what,
-                          double TSeedNumbers::*seedField, const TGetter& get) {
-    std::vector<std::pair<double, std::string>> seeds, ours;
-    for (const auto& s : r.row.seedNumbers)
-        if (std::isfinite(s.*seedField)) {
-            seeds.push_back({s.*seedField, s.label});
+                          double TPaperNumbers::*paperField, const TGetter& get) {
+    std::vector<std::pair<double, std::string>> paper, ours;
+    for (const auto& s : r.row.paperNumbers)
+        if (std::isfinite(s.*paperField)) {
+            paper.push_back({s.*paperField, s.label});
             ours.push_back({seedStat(r, s.label, get).mean, s.label});
         }
-    if (seeds.size() < 2) return "";
-    std::sort(seeds.begin(), seeds.end());
+    if (paper.size() < 2) return "";
+    std::sort(paper.begin(), paper.end());
     std::sort(ours.begin(), ours.end());
     std::string cs, co;
-    for (size_t i = 0; i < seeds.size(); i++) cs += (i ? " < " : "") + seeds[i].second;
+    for (size_t i = 0; i < paper.size(); i++) cs += (i ? " < " : "") + paper[i].second;
     for (size_t i = 0; i < ours.size(); i++)
         co += (i ? (pairedTie(r, ours[i - 1].second, ours[i].second, get) ? " ≈ " : " < ")
                  : "") +
               ours[i].second;
     bool reversed = false, tied = false;
-    for (size_t i = 0; i < seeds.size(); i++)
-        for (size_t j = i + 1; j < seeds.size(); j++) {
-            const auto& a = seeds[i].second;
-            const auto& b = seeds[j].second;
+    for (size_t i = 0; i < paper.size(); i++)
+        for (size_t j = i + 1; j < paper.size(); j++) {
+            const auto& a = paper[i].second;
+            const auto& b = paper[j].second;
             if (pairedTie(r, a, b, get))
                 tied = true;
             else if (seedStat(r, a, get).mean > seedStat(r, b, get).mean)
                 reversed = true;
         }
-    const char* verdict = reversed ? " (**different ordering**)"
-                          : tied   ? " (not contradicted, but not resolved by our seeds)"
-                                   : " (same ordering)";
-    return std::string(what) + ": seeds " + cs + "; ours " + co + verdict;
+    const char* verdict =
+        reversed ? " (**different ordering**)"
+        : tied   ? " (not contradicted, but not resolved by our random seeds)"
+                 : " (same ordering)";
+    return std::string(what) + ": papers " + cs + "; ours " + co + verdict;
 }
 
 std::string tableSection(const TRowResults& r) {
     using S = rfir::eval::TErrorStats;
     std::ostringstream o;
     o << "| method | x | y | θ [rad] | dr | dr max | tag x | tag y | dt | dt max "
-         "| mapped / passed over | ms per step | seeds' dr / dt |\n"
+         "| mapped / passed over | ms per step | papers' dr / dt |\n"
          "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
          "---: | ---: |\n";
     for (const auto& m : r.row.methods) {
@@ -121,7 +122,7 @@ std::string tableSection(const TRowResults& r) {
             return x.eval.map->passedOver ? double(*x.eval.map->passedOver) : kNaN;
         });
         const TStat ms_ = seedStat(r, L, [](auto& x) { return x.msPerStep; });
-        const auto* s = seedFor(r.row, L);
+        const auto* s = paperFor(r.row, L);
         o << "| " << L << " | " << fmtPM(rs(&S::mean_dx), 1e3, 1) << " | "
           << fmtPM(rs(&S::mean_dy), 1e3, 1) << " | " << fmtPM(rs(&S::mean_dtheta), 1, 3)
           << " | **" << fmtPM(rs(&S::mean_dist), 1e3, 1) << "** | " << fmt(1e3 * rMax, 0)
@@ -129,11 +130,11 @@ std::string tableSection(const TRowResults& r) {
           << fmtPM(ms(&S::mean_dy), 1e3, 1) << " | **" << fmtPM(ms(&S::mean_dist), 1e3, 1)
           << "** | " << fmt(1e3 * tMax, 0) << " | " << fmt(mapped.mean, 0) << " / "
           << fmt(passed.mean, 0) << " | " << fmt(ms_.mean, 3) << " | "
-          << seedCell(s, s ? s->dr : kNaN) << " / " << seedCell(s, s ? s->dt : kNaN)
+          << paperCell(s, s ? s->dr : kNaN) << " / " << paperCell(s, s ? s->dt : kNaN)
           << " |\n";
     }
-    for (const auto& c : {orderingCheck(r, "Robot", &TSeedNumbers::dr, robotMeanDist),
-                          orderingCheck(r, "Tags", &TSeedNumbers::dt, tagMeanDist)})
+    for (const auto& c : {orderingCheck(r, "Robot", &TPaperNumbers::dr, robotMeanDist),
+                          orderingCheck(r, "Tags", &TPaperNumbers::dt, tagMeanDist)})
         if (!c.empty()) o << "\n" << c << ".\n";
     return o.str();
 }
@@ -151,8 +152,8 @@ std::string summary(const std::vector<TRowResults>& rows) {
     const std::vector<std::string> methods{"PS-SLAM", "PF-SLAM", "FastSLAM",
                                            "Dead reckoning"};
     std::ostringstream o;
-    o << "Robot dr / tags dt [mm]: ours (mean ± std over seeds), the seeds' numbers "
-         "below.\n\n| row | seeds' source |";
+    o << "Robot dr / tags dt [mm]: ours (mean ± std over seeds), the papers' numbers "
+         "below.\n\n| row | source in the papers |";
     for (const auto& m : methods) o << " " << m << " |";
     o << "\n| --- | --- | ---: | ---: | ---: | ---: |\n";
     for (const auto& r : rows) {
@@ -160,11 +161,12 @@ std::string summary(const std::vector<TRowResults>& rows) {
         o << "| [" << r.row.id << "](#" << r.row.id << ") " << r.row.title << " | "
           << r.row.source << " |";
         for (const auto& m : methods) {
-            const auto* s = seedFor(r.row, m);
+            const auto* s = paperFor(r.row, m);
             o << " " << fmtPM(seedStat(r, m, robotMeanDist), 1e3, 0) << " / "
               << fmtPM(seedStat(r, m, tagMeanDist), 1e3, 0);
             if (s)
-                o << "<br>seeds: " << seedCell(s, s->dr) << " / " << seedCell(s, s->dt);
+                o << "<br>papers: " << paperCell(s, s->dr) << " / "
+                  << paperCell(s, s->dt);
             o << " |";
         }
         o << "\n";
@@ -185,7 +187,7 @@ std::string timeSentence(const std::vector<TRowResults>& rows, const TMeta& meta
 
 std::string header(const std::vector<TRowResults>& rows, const TMeta& meta) {
     std::ostringstream o;
-    o << "# Experiments: our numbers beside the seeds'\n\n"
+    o << "# Experiments: our numbers beside the papers'\n\n"
       << "Generated by `rfir-experiments` (run `bash scripts/experiments.sh`; this file "
          "is "
          "overwritten by each run). Command: `"
@@ -208,7 +210,8 @@ std::string header(const std::vector<TRowResults>& rows, const TMeta& meta) {
          "(θ in rad): the mean over the run (robot) or over the mapped tags (tags) of "
          "|dx|, |dy|, |dθ| and the distance, averaged over a row's sub-runs (e.g. the "
          "five "
-         "predefined paths), then **mean ± standard deviation over the seeds**; *max* is "
+         "predefined paths), then **mean ± standard deviation over the random seeds**; "
+         "*max* is "
          "the largest error over all seeds and sub-runs. Orderings are judged paired "
          "over seeds (the methods share each seed's data): `a < b` when the mean "
          "per-seed difference is more than two standard errors from zero, else `a ≈ b`. "
@@ -227,8 +230,8 @@ std::string markdownReport(const std::vector<TRowResults>& rows, const TMeta& me
     o << "## Rows\n\n";
     for (const auto& r : rows) {
         o << "<a id=\"" << r.row.id << "\"></a>\n### " << r.row.id << ": " << r.row.title
-          << " (" << r.row.source << ")\n\nThe seeds report: " << r.row.seedClaim
-          << ". Our seeds: " << seedList(r) << "; simulated setup: ";
+          << " (" << r.row.source << ")\n\nThe papers report: " << r.row.paperClaim
+          << ". Our random seeds: " << seedList(r) << "; simulated setup: ";
         std::set<std::string> inis;
         for (const auto& k : r.row.runs) inis.insert("`config_ini/" + k.simIni + "`");
         for (auto it = inis.begin(); it != inis.end(); ++it)

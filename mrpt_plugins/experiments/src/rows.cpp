@@ -31,7 +31,7 @@ std::vector<TSubRun> fivePredefined(const std::string& ini) {
 }
 
 TRow tableRow(const std::string& id, const std::string& title, const std::string& source,
-              std::vector<TSubRun> runs, std::vector<TSeedNumbers> seeds,
+              std::vector<TSubRun> runs, std::vector<TPaperNumbers> seeds,
               const std::string& claim) {
     TRow r;
     r.id = id;
@@ -41,8 +41,8 @@ TRow tableRow(const std::string& id, const std::string& title, const std::string
     r.runs = std::move(runs);
     r.points = {TPoint{}};
     r.methods = threeMethods();
-    r.seedNumbers = std::move(seeds);
-    r.seedClaim = claim;
+    r.paperNumbers = std::move(seeds);
+    r.paperClaim = claim;
     r.figure = true;
     return r;
 }
@@ -85,7 +85,7 @@ void addLargeReaderRows(std::vector<TRow>& rows) {
                   {"FastSLAM", 315.1, 204.5, 0.182, 420.8, 296.6, 210.1, 412.1, ""}},
                  "PS-SLAM < PF-SLAM < FastSLAM (54 < 82 < 421 mm)"));
     rows.push_back(tableRow("t42", "300 mm readers, 4 tags/m^2, random path",
-                            "thesis table 4.2 (004 table 5)",
+                            "thesis table 4.2 (PS-SLAM paper table 5)",
                             {one("sim_rfid_300mm_4tags_random.ini")},
                             {{"PS-SLAM", N, N, 0.010, 29.1, N, N, 50.4, ""},
                              {"PF-SLAM", N, N, N, 66.7, N, N, 82.3, ""},
@@ -93,24 +93,24 @@ void addLargeReaderRows(std::vector<TRow>& rows) {
                             "PS-SLAM < PF-SLAM < FastSLAM (29 < 67 < 246 mm)"));
     rows.push_back(
         tableRow("p4_t4", "300 mm readers, 4 tags/m^2, 5 predefined paths with rotation",
-                 "004 table 4", fivePredefined("sim_rfid_300mm_rotation.ini"),
+                 "PS-SLAM paper table 4", fivePredefined("sim_rfid_300mm_rotation.ini"),
                  {{"PS-SLAM", N, N, 0.005, 36, N, N, 66, "about"},
                   {"FastSLAM", N, N, N, 300, N, N, 300, "over"}},
                  "PS-SLAM best (about 36 / 66 mm), FastSLAM over 300 mm"));
 }
 
 void addRangeBearingRows(std::vector<TRow>& rows) {
-    rows.push_back(tableRow("p4_t6",
-                            "range-bearing sensor, 5 predefined paths without rotation",
-                            "004 table 6", fivePredefined("sim_rb_norotation.ini"),
-                            {{"PS-SLAM", N, N, 0.016, 113, N, N, 112, "about"}},
-                            "PS-SLAM about equal to PF-SLAM, both better than FastSLAM"));
-    rows.push_back(tableRow("p4_t7",
-                            "range-bearing sensor, 5 predefined paths with rotation",
-                            "004 table 7", fivePredefined("sim_rb_rotation.ini"),
-                            {{"PS-SLAM", N, N, 0.012, 97, N, N, 93, "about"},
-                             {"FastSLAM", N, N, N, 270, N, N, N, "about"}},
-                            "PS-SLAM better than PF-SLAM; FastSLAM about 270 mm"));
+    rows.push_back(
+        tableRow("p4_t6", "range-bearing sensor, 5 predefined paths without rotation",
+                 "PS-SLAM paper table 6", fivePredefined("sim_rb_norotation.ini"),
+                 {{"PS-SLAM", N, N, 0.016, 113, N, N, 112, "about"}},
+                 "PS-SLAM about equal to PF-SLAM, both better than FastSLAM"));
+    rows.push_back(
+        tableRow("p4_t7", "range-bearing sensor, 5 predefined paths with rotation",
+                 "PS-SLAM paper table 7", fivePredefined("sim_rb_rotation.ini"),
+                 {{"PS-SLAM", N, N, 0.012, 97, N, N, 93, "about"},
+                  {"FastSLAM", N, N, N, 270, N, N, N, "about"}},
+                 "PS-SLAM better than PF-SLAM; FastSLAM about 270 mm"));
 }
 }  // namespace
 

@@ -36,7 +36,7 @@ TRow rangeSweep() {
         r.points.push_back(
             {num(mm) + " mm", mm, {"robot.reader_half_size=" + num(mm / 2000.0)}, {}});
     r.methods = filterMethods();
-    r.seedClaim =
+    r.paperClaim =
         "PS-SLAM and PF-SLAM equal below about 180 mm, PS-SLAM better above; "
         "FastSLAM worst, growing with the range";
     r.xLabel = "detection square side [mm]";
@@ -55,7 +55,7 @@ TRow particleSweep() {
     for (double m : {100, 200, 500, 1000, 2000, 5000})
         r.points.push_back({"M = " + num(m), m, {}, {"slam.robot_particles=" + num(m)}});
     r.methods = filterMethods();
-    r.seedClaim =
+    r.paperClaim =
         "time per update grows linearly with M for every method; PF/PS-SLAM "
         "cost does not grow with the number of tags, FastSLAM's does";
     r.xLabel = "robot particles M";
@@ -73,7 +73,7 @@ TRow odometrySweep(const std::string& id, const std::string& ini,
     TRow r;
     r.id = id;
     r.title = "odometry noise x0.25-x2 of the stock INI (" + setup + ")";
-    r.source = "ours (the seeds' odometry noise is unknown)";
+    r.source = "ours (the papers' odometry noise is unknown)";
     r.kind = TRowKind::Sweep;
     r.runs = {{"", ini, {}}};
     for (double f : {0.25, 0.5, 1.0, 2.0}) {
@@ -85,8 +85,8 @@ TRow odometrySweep(const std::string& id, const std::string& ini,
                  {"PF-SLAM", "pf", {}},
                  {"FastSLAM", "fastslam", {}},
                  {"Dead reckoning", "odometry", {}}};
-    r.seedClaim =
-        "(not in the seeds; their tables come from one unstated odometry noise)";
+    r.paperClaim =
+        "(not in the papers; their tables come from one unstated odometry noise)";
     r.xLabel = "odometry noise factor";
     r.logX = true;
     return r;
@@ -106,7 +106,7 @@ TRow kidnapRow() {
                  {"PF-SLAM", "pf", {}},
                  {"FastSLAM", "fastslam", {}},
                  {"Dead reckoning", "odometry", {}}};
-    r.seedClaim = "PF-SLAM notices the kidnapping and recovers an accurate estimate";
+    r.paperClaim = "PF-SLAM notices the kidnapping and recovers an accurate estimate";
     r.figure = true;
     return r;
 }
@@ -129,7 +129,7 @@ TRow policyRow(const std::string& id, const std::string& title, const std::strin
             r.methods.push_back({std::string(m[1] == 's' ? "PS-SLAM " : "PF-SLAM ") + pol,
                                  m,
                                  {std::string("tagmap_likelihood.robot_update=") + pol}});
-    r.seedClaim = "(not in the seeds)";
+    r.paperClaim = "(not in the papers)";
     return r;
 }
 }  // namespace

@@ -26,14 +26,14 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
     return s;
 }
 
-std::vector<std::string> simSets(const TSession& s, const TRunSpec& spec) {
+std::vector<std::string> simSets(const TExperimentRun& s, const TRunSpec& spec) {
     std::vector<std::string> v = spec.simSets;
     v.insert(v.end(), s.simSets.begin(), s.simSets.end());
     return v;
 }
 
 /** The simulated data set of (ini, sets, seed), written once. */
-std::string dataset(const TSession& s, const TRunSpec& spec, uint64_t seed) {
+std::string dataset(const TExperimentRun& s, const TRunSpec& spec, uint64_t seed) {
     // The INI's text is part of the key: an edited INI is simulated anew.
     std::ifstream ini(s.configDir + "/" + spec.simIni);
     std::stringstream text;
@@ -93,7 +93,7 @@ void score(const rfir::localize::TRunResult& res, const std::string& dir,
 }
 }  // namespace
 
-TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
+TRunMetrics runOne(const TExperimentRun& s, const TRunSpec& spec, uint64_t seed,
                    const std::string& outDir) {
     const std::string dir = dataset(s, spec, seed);
     rfir::localize::TConfig cfg;
@@ -119,7 +119,7 @@ TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
     return m;
 }
 
-std::vector<TRunMetrics> runSeeds(const TSession& s, const TRunSpec& spec, int n,
+std::vector<TRunMetrics> runSeeds(const TExperimentRun& s, const TRunSpec& spec, int n,
                                   uint64_t offset) {
     std::vector<TRunMetrics> out;
     for (int k = 0; k < n; k++)
@@ -164,7 +164,7 @@ TAggregate aggregate(const std::vector<TRunMetrics>& runs) {
     return a;
 }
 
-void setEdits(TSession& s, const std::vector<std::string>& sets) {
+void setEdits(TExperimentRun& s, const std::vector<std::string>& sets) {
     const auto split = rfir::common::routeIniEdits(
         {{"sim", "simulation INIs", rfir::sim::simConfigSections()},
          {"localize", "localization INI", rfir::localize::configSections()}},
@@ -188,7 +188,7 @@ void setEdits(TSession& s, const std::vector<std::string>& sets) {
     });
 }
 
-void progress(const TSession& s, const std::string& what) {
+void progress(const TExperimentRun& s, const std::string& what) {
     if (s.verbose) std::cerr << "rfir-ir-experiments: " << what << "\n";
 }
 

@@ -52,7 +52,7 @@ std::string startNote(const TAggregate& a) {
 }  // namespace
 
 namespace {
-std::string figure(const TSession& s, const TOptions& opt, const TRunSpec& spec,
+std::string figure(const TExperimentRun& s, const TOptions& opt, const TRunSpec& spec,
                    const std::string& name, const std::string& caption) {
     const std::string dir = s.workDir + "/fig_" + name;
     runOne(s, spec, s.firstSeed, dir);
@@ -71,7 +71,7 @@ struct TRoom {
 
 /** Table 5.2 in one room: the three configurations (and the per-particle
  * association) at the spots, all of them and from 10 s after the start. */
-std::string roomSection(const TSession& s, const TOptions& opt, const TRoom& room) {
+std::string roomSection(const TExperimentRun& s, const TOptions& opt, const TRoom& room) {
     const double tProp[8] = {22, 29, 0.06, 36, 69, 79, 0.23, 105};
     const double tUniq[8] = {30, 25, 0.04, 39, 87, 91, 0.10, 126};
     const double tOdo[8] = {94, 55, 0.03, 108, 161, 99, 0.08, 189};
@@ -110,7 +110,7 @@ std::string roomSection(const TSession& s, const TOptions& opt, const TRoom& roo
 }
 }  // namespace
 
-std::string expConfigurations(const TSession& s, const TOptions& opt) {
+std::string expConfigurations(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "configurations (table 5.2)");
     std::ostringstream md;
     md << "## Emitter configurations at 70 marked spots (thesis 5.4.1-5.4.2, table "
@@ -144,7 +144,7 @@ std::string expConfigurations(const TSession& s, const TOptions& opt) {
     return md.str();
 }
 
-std::string expRotation(const TSession& s, const TOptions& opt) {
+std::string expRotation(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "rotation (5.4.3)");
     TRunSpec rot{"sim_ir_rotation.ini"}, odo{"sim_ir_rotation.ini"};
     odo.odometryOnly = true;
@@ -165,7 +165,7 @@ std::string expRotation(const TSession& s, const TOptions& opt) {
     return md.str();
 }
 
-std::string expSpeeds(const TSession& s, const TOptions& opt) {
+std::string expSpeeds(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "speeds (5.4.4)");
     std::ostringstream md;
     md << "## Robot speeds (thesis 5.4.4)\n\nThe loop x3 with 70 spots at 100-300 mm/s, "
@@ -189,7 +189,7 @@ std::string expSpeeds(const TSession& s, const TOptions& opt) {
     return md.str();
 }
 
-std::string expFailures(const TSession& s, const TOptions& opt) {
+std::string expFailures(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "failed emitters (5.4.5)");
     TRunSpec ok{"sim_ir_loop.ini"}, failed{"sim_ir_failed.ini"};
     const auto aK = aggregate(runSeeds(s, ok, opt.seeds));

@@ -16,7 +16,7 @@ const std::string kAssoc = "MetricMap_irEmitterMap_00_likelihoodOpts.association
 const std::string kLik = "MetricMap_irEmitterMap_00_likelihoodOpts.";
 }  // namespace
 
-std::string expHeights(const TSession& s, const TOptions& opt) {
+std::string expHeights(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "heights (table 5.3)");
     // Thesis table 5.3: mean dr, max dr [mm] per height.
     const double thesis[11][2] = {{80, 251}, {85, 171}, {49, 128}, {47, 105},
@@ -68,7 +68,7 @@ std::string expHeights(const TSession& s, const TOptions& opt) {
     return md.str();
 }
 
-std::string expAssociation(const TSession& s, const TOptions& opt) {
+std::string expAssociation(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "association");
     struct TScenario {
         std::string name;
@@ -129,7 +129,7 @@ std::string expAssociation(const TSession& s, const TOptions& opt) {
 
 /** Tracking after a late first unique ID (no unique emitter on the first
  * leg) against M: what the start sweep does not show. */
-static std::string lateUniqueTable(const TSession& s, const TOptions& opt) {
+static std::string lateUniqueTable(const TExperimentRun& s, const TOptions& opt) {
     std::ostringstream md;
     md << "\nTracking when the first unique ID comes late, at the loop's second corner "
           "(12, 13, 14 absent), one loop, "
@@ -153,7 +153,7 @@ static std::string lateUniqueTable(const TSession& s, const TOptions& opt) {
     return md.str();
 }
 
-std::string expParticles(const TSession& s, const TOptions& opt) {
+std::string expParticles(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "particle count at the start");
     const std::vector<int> Ms = opt.quick ? std::vector<int>{50, 500}
                                           : std::vector<int>{25, 50, 100, 200, 500, 1000};
@@ -227,7 +227,7 @@ std::string expParticles(const TSession& s, const TOptions& opt) {
     return md.str();
 }
 
-std::string expRawAndDecoder(const TSession& s, const TOptions& opt) {
+std::string expRawAndDecoder(const TExperimentRun& s, const TOptions& opt) {
     progress(s, "raw windows and decoder");
     TRunSpec dec{"sim_ir_loop.ini"}, raw{"sim_ir_raw.ini"};
     dec.simSets = {"trajectory.laps=1", "trajectory.spots=0"};

@@ -118,7 +118,7 @@ struct CRFIDTagParticleMapImpl {
     }
 
     /** A new tag's particles: uniform over the reader's rectangle placed by the
-     * robot mean (the seeds) or, per particle, by a drawn robot pose. */
+     * robot mean (the papers) or, per particle, by a drawn robot pose. */
     static void initTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
                         const ReaderArea& r, rfir::models::TRandom& rng) {
         const auto mode = m.insertionOptions.tagRobotPose;
@@ -260,10 +260,10 @@ struct CRFIDTagParticleMapImpl {
      * count for it, and it starts over as a tag on its first visit: the
      * placement comes from the robot's own pose, so the rest of this visit
      * only refines it, and it weighs the robot from the next visit on (as a
-     * new tag does). Until 2026-12-05 the rest of the visit weighed the
-     * robot against it, the double counting revisit_min_travel keeps out:
-     * a 300 mm square places the tag up to 0.15 m off, and the reads of the
-     * pass turned the robot toward that (docs/slam.md, "Reseating contradicted tags"). */
+     * new tag does). Weighing the robot against it in the same visit would
+     * be the double counting revisit_min_travel keeps out: a 300 mm square
+     * places the tag up to 0.15 m off, and the reads of the pass would turn
+     * the robot toward that (docs/slam.md, "Reseating contradicted tags"). */
     static void reseatTag(const Map& m, Entry& e, const mrpt::math::TPose2D& robot,
                           const ReaderArea& r, rfir::models::TRandom& rng) {
         initTag(m, e, robot, r, rng);

@@ -167,7 +167,7 @@ rfir::obs::CObservationIRSignals::Ptr senseIR(const TSimConfig& cfg, const TWorl
         rd.receiver = rx;
         const auto p = robot + mrpt::poses::CPose2D(rx.x, rx.y, 0);
         // The nearest working emitter within the visible radius (the lattice
-        // keeps two emitters from being in view at once with the seed's values).
+        // keeps two emitters from being in view at once with the thesis' values).
         int best = -1;
         double bestD = ir.visibleRadius;
         for (size_t i = 0; i < w.emitters.size(); i++) {

@@ -75,7 +75,7 @@ mrpt::obs::CObservationBearingRange::Ptr senseRB(const TSimConfig& cfg, const TW
 
 /** Noise-free voltage of an emitter at horizontal distance d and vertical
  * distance h: eq. 5.3 scaled by (referenceHeight / h)^2 (inverse-square law;
- * the seed fitted it at 1.2 m only). */
+ * the thesis fitted it at 1.2 m only). */
 double modelVoltage(const TIRConfig& ir, double d, double h);
 
 /** A number of a ground-truth fault record (the shortest of 15-17

@@ -61,7 +61,7 @@ struct CReadCost {
     }
 };
 
-/** A read as a Gaussian about the reader's centre (the former smoother's
+/** A read as a Gaussian about the reader's centre (the `lm` solver's
  * model, std = factor x half-size): the first, convex-like solve, from which
  * the flat-inside model starts. */
 struct CGaussianReadCost {

@@ -22,7 +22,7 @@ struct TMethodSpec {
 };
 
 /** A row of a table of the papers (mm, rad); NaN where they give no number. */
-struct TSeedNumbers {
+struct TPaperNumbers {
     std::string label;  //!< method as in our rows
     double x = kNaN, y = kNaN, theta = kNaN, dr = kNaN;
     double tx = kNaN, ty = kNaN, dt = kNaN;
@@ -59,13 +59,13 @@ struct TRow {
     std::vector<TSubRun> runs;
     std::vector<TPoint> points;
     std::vector<TMethodSpec> methods;
-    std::vector<TSeedNumbers> seedNumbers;
-    std::string seedClaim;  //!< what the seed reports, in words
-    bool figure = false;    //!< path/map figure of the first seed
+    std::vector<TPaperNumbers> paperNumbers;
+    std::string paperClaim;  //!< what the papers report, in words
+    bool figure = false;     //!< path/map figure of the first seed
     std::string xLabel;
     bool logX = false;
     bool plotTime = false;  //!< sweep: also plot the time per update
-    unsigned maxSeeds = 0;  //!< > 0: at most this many of the seeds (long rows)
+    unsigned maxSeeds = 0;  //!< > 0: at most this many random seeds (long rows)
 };
 
 /** Every row; `quick` trims them (first sub-run, end points of sweeps). */

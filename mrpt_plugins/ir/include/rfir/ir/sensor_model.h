@@ -1,7 +1,7 @@
 /* rfir: the IR sensor model of thesis chapter 5 as small functors: the
  * voltage-vs-distance curve (eq. 5.3), the voltage likelihood (eq. 5.2) and the
  * belief that picks one of the emitters sharing a repeated ID (eq. 5.1).
- * Units: metres and volts (the seed's curve takes millimetres). */
+ * Units: metres and volts (the thesis' curve takes millimetres). */
 #pragma once
 
 #include <rfir/obs/CObservationIRSignals.h>
@@ -32,21 +32,21 @@ mrpt::math::TPoint2D receiverInWorld(const mrpt::math::TPose2D& robot,
 /** Parameters of the per-reading likelihood beyond eq. 5.2. */
 struct TIRLikelihoodParams {
     TVoltageCurve curve;
-    /** sigma of eq. 5.2 (the seed does not give it). Wider than the voltage
+    /** sigma of eq. 5.2 (the thesis does not give it). Wider than the voltage
      * noise: readings at 10 Hz of one emitter are strongly correlated, and a
      * narrow sigma depletes the particles while the heading is still ambiguous
      * (docs/results_ir.md). */
     double sigmaVolts = 0.2;
-    double sigmaBelief = 0.03;  //!< sigma of eq. 5.1 (seed: 30 mm)
+    double sigmaBelief = 0.03;  //!< sigma of eq. 5.1 (the thesis: 30 mm)
     /** Log-likelihood added when the receiver would be beyond the detected
      * emitter's visible radius (it could not have seen it); 0 disables it
-     * (the seed's eq. 5.2 alone). */
+     * (the thesis' eq. 5.2 alone). */
     double outOfRangeLogLik = -8.0;
     /** The out-of-range term ramps in linearly over this distance (m) past the
      * visible radius, so that a track a centimetre off at the edge of view is
      * not thrown away. */
     double outOfRangeRamp = 0.05;
-    /** Negative information (not in the seed): log-likelihood added when a
+    /** Negative information (not in the thesis): log-likelihood added when a
      * receiver that saw nothing would be within missRadiusFraction of the
      * visible radius of some emitter of the map; 0 disables it. Failed
      * emitters stay in the map, so it is kept mild. */
@@ -54,10 +54,10 @@ struct TIRLikelihoodParams {
     double missRadiusFraction = 0.8;
     /** The robot stays under the emitters: a pose farther than areaMargin
      * outside their bounding box gets outOfAreaLogLik per observation (not in
-     * the seed; 0 disables it). */
+     * the thesis; 0 disables it). */
     double areaMargin = 0.5;
     double outOfAreaLogLik = 0.0;
-    /** Voltage outliers (not in the seed): eq. 5.2 becomes the mixture
+    /** Voltage outliers (not in the thesis): eq. 5.2 becomes the mixture
      * (1 - w) N(V; Vbar, sigma) + w U(0, voltOutlierRange), so that one wild
      * voltage (a reflection, a glitch) bounds the loss of a good pose;
      * 0 keeps eq. 5.2 exactly. */

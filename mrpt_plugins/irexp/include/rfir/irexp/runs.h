@@ -30,7 +30,7 @@ struct TRunMetrics {
 };
 
 /** Settings shared by every run of one rfir-ir-experiments call. */
-struct TSession {
+struct TExperimentRun {
     std::string configDir;  //!< config_ini of the source tree
     std::string workDir;    //!< rawlogs and per-run outputs
     bool verbose = true;
@@ -46,15 +46,15 @@ struct TSession {
  * malformed edit, an unknown section or key or a bad value fails before any
  * run. Throws rfir::common::CUsageError naming the edit when an edit is to
  * blame, else the INI's own error "FILE: [section] key: why". */
-void setEdits(TSession& s, const std::vector<std::string>& sets);
+void setEdits(TExperimentRun& s, const std::vector<std::string>& sets);
 
 /** One line on stderr naming the experiment being run (unless quiet). */
-void progress(const TSession& s, const std::string& what);
+void progress(const TExperimentRun& s, const std::string& what);
 
 /** Simulates (once per spec and seed: cached in workDir), localizes through
  * the same code as rfir-localize, scores. `outDir` non-empty: also writes the
  * rfir-localize outputs there (path.tum, path_map.png, ...). */
-TRunMetrics runOne(const TSession& s, const TRunSpec& spec, uint64_t seed,
+TRunMetrics runOne(const TExperimentRun& s, const TRunSpec& spec, uint64_t seed,
                    const std::string& outDir = {});
 
 /** Over seeds: means of the per-run means, max of the per-run maxima. */
@@ -68,7 +68,7 @@ TAggregate aggregate(const std::vector<TRunMetrics>& runs);
 
 /** Runs a spec over n seeds from s.firstSeed + offset (an offset keeps a row's
  * seeds apart from the others'). */
-std::vector<TRunMetrics> runSeeds(const TSession& s, const TRunSpec& spec, int n,
+std::vector<TRunMetrics> runSeeds(const TExperimentRun& s, const TRunSpec& spec, int n,
                                   uint64_t offset = 0);
 
 }  // namespace rfir::irexp

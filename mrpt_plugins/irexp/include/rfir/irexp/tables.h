@@ -22,13 +22,13 @@ std::string statsRow(const std::string& label, const rfir::eval::TErrorStats& s)
 std::string fmt(double v, int decimals);
 
 // Each returns a markdown section; figures go to opt.imgDir.
-std::string expConfigurations(const TSession& s, const TOptions& opt);  // 5.4.1-2
-std::string expRotation(const TSession& s, const TOptions& opt);        // 5.4.3
-std::string expSpeeds(const TSession& s, const TOptions& opt);          // 5.4.4
-std::string expFailures(const TSession& s, const TOptions& opt);        // 5.4.5
-std::string expHeights(const TSession& s, const TOptions& opt);         // table 5.3
-std::string expAssociation(const TSession& s, const TOptions& opt);     // ours
-std::string expParticles(const TSession& s, const TOptions& opt);       // ours: M
-std::string expRawAndDecoder(const TSession& s, const TOptions& opt);   // ours
+std::string expConfigurations(const TExperimentRun& s, const TOptions& opt);  // 5.4.1-2
+std::string expRotation(const TExperimentRun& s, const TOptions& opt);        // 5.4.3
+std::string expSpeeds(const TExperimentRun& s, const TOptions& opt);          // 5.4.4
+std::string expFailures(const TExperimentRun& s, const TOptions& opt);        // 5.4.5
+std::string expHeights(const TExperimentRun& s, const TOptions& opt);         // table 5.3
+std::string expAssociation(const TExperimentRun& s, const TOptions& opt);     // ours
+std::string expParticles(const TExperimentRun& s, const TOptions& opt);       // ours: M
+std::string expRawAndDecoder(const TExperimentRun& s, const TOptions& opt);   // ours
 
 }  // namespace rfir::irexp

@@ -25,7 +25,7 @@ class CObservationRFIDReaders;
 namespace rfir::maps {
 /** How re-reads of a tag weigh the robot (see docs/tag-maps.md). */
 enum class TRobotUpdatePolicy {
-    /** INI "literal": the seeds' Algorithm 1: update the tag first, then weigh
+    /** INI "literal": the papers' Algorithm 1: update the tag first, then weigh
      * the robot with the updated estimate, on every read (incl. the first). */
     Literal,
     /** INI "revisit": only the first read of a new visit (the tag was absent
@@ -40,7 +40,7 @@ enum class TRobotUpdatePolicy {
 
 /** Which robot pose places the reader when a tag is created or re-weighed. */
 enum class TTagRobotPose {
-    /** INI "mean": the robot's mean pose (the seeds). */
+    /** INI "mean": the robot's mean pose (the papers). */
     Mean,
     /** INI "samples_init": a new tag's particle l = a uniform point of the
      * reader placed by a robot pose drawn from the robot's particle set
@@ -50,7 +50,7 @@ enum class TTagRobotPose {
      * reader placed by a freshly drawn robot pose. */
     Samples,
     /** INI "samples_visit": the reads of a tag's first visit share the robot's
-     * error, so they are placed by the robot mean (as the seeds), and the tag
+     * error, so they are placed by the robot mean (as the papers do), and the tag
      * keeps, per particle, a robot pose drawn from the robot set at its first
      * read; its estimate is the particles moved as if the robot had been at
      * those poses (tag = drawn robot pose + position relative to the robot),
@@ -60,7 +60,7 @@ enum class TTagRobotPose {
 
 /** What a robot particle is weighed against (see docs/tag-maps.md). */
 enum class TRobotLikelihood {
-    /** INI "tag_mean": the tag's mean estimate (the seeds). */
+    /** INI "tag_mean": the tag's mean estimate (the papers). */
     TagMean,
     /** INI "tag_particles": the detection likelihood averaged over K tag
      * particles (a fixed evenly spaced subset), so an uncertain tag weighs
@@ -252,7 +252,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
          * support still outweighs the contradicting run does not update it
          * (one ghost read does not drag a tag). */
         bool holdOutvoted = true;
-        /** negative_information (p_d in [0, 0.99]; 0: off, the seeds; the
+        /** negative_information (p_d in [0, 0.99]; 0: off, the papers; the
          * stock slam INIs: 0.5): after each RFID observation, a tag on its
          * first visit, read in the last negative_window observations, whose
          * estimate lies near a polled reader (half-sizes >=
@@ -275,7 +275,7 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
 
     struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
         /** detection_model, beta, gaussian_sigma_scale: weigh both tag and robot
-         * particles (the seeds use one function for both). */
+         * particles (the papers use one function for both). */
         rfir::models::DetectionModelParams detection;
         /** rb_sigma_range (m), rb_sigma_bearing_deg (INI in degrees). */
         rfir::models::RangeBearingParams rangeBearing;
@@ -286,12 +286,12 @@ class CRFIDTagParticleMap : public mrpt::maps::CMetricMap {
          * several readers into one visit. */
         double revisitMinTravel = 0;
         /** rb_use_landmark_cov: add the landmark estimate's covariance to the
-         * range-bearing noise when weighing the robot (false = the seeds). */
+         * range-bearing noise when weighing the robot (false = the papers). */
         bool rbUseLandmarkCov = false;
         /** robot_likelihood, robot_likelihood_k (K tag particles, RFID only). */
         TRobotLikelihood robotLikelihood = TRobotLikelihood::TagMean;
         size_t robotLikelihoodK = 12;
-        /** robot_negative_information (p_d in [0, 0.99]; 0: off, the seeds):
+        /** robot_negative_information (p_d in [0, 0.99]; 0: off, the papers):
          * a read that weighs the robot brings the polls of the same
          * observation that missed the tag, by the large readers ([tagmap]
          * negative_min_half_size) near the one that read it: each weighs

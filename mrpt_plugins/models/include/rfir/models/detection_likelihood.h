@@ -20,20 +20,20 @@ struct ReaderArea {
 };
 
 enum class DetectionModel {
-    Step,     //!< the seeds' model: flat inside the rectangle, Gaussian tail
+    Step,     //!< the papers' model: flat inside the rectangle, Gaussian tail
     Gaussian  //!< a plain Gaussian around the reader centre
 };
 
 struct DetectionModelParams {
     DetectionModel model = DetectionModel::Step;
-    /** Step model: gain of the tail so that w is about 1 at the edge. The seed
-     * uses 1.618 (sigma = 30 mm); exp(1/2) = 1.6487 would make it exactly 1. */
+    /** Step model: gain of the tail so that w is about 1 at the edge. The papers
+     * use 1.618 (sigma = 30 mm); exp(1/2) = 1.6487 would make it exactly 1. */
     double beta = 1.618;
     /** Gaussian model: sigma per axis = scale * half-size. */
     double gaussianSigmaScale = 1.0;
     /** Outlier mixture (COutlierMixture) over the model above: share eps of
      * reads from anywhere, with log-likelihood `outlierLogFloor` (relative to
-     * the model's best, 0). 0 = off, the seeds' model alone. INI
+     * the model's best, 0). 0 = off, the papers' model alone. INI
      * [tagmap_likelihood] outlier_weight, outlier_log_floor (docs/slam.md).
      * The floor also marks a read as contradicted (contradicts()). */
     double outlierWeight = 0.0;

@@ -54,8 +54,9 @@ TRangeBearing rangeBearingModel(const mrpt::math::TPose2D& robot,
                                 const mrpt::math::TPoint2D& landmark,
                                 TRangeBearingJacobians* J);
 struct RangeBearingParams {
-    double sigmaRange = 0.010;                           //!< m (seed: 10 mm)
-    double sigmaBearing = 3.0 * 3.14159265358979 / 180;  //!< rad (seed: 3 deg)
+    double sigmaRange = 0.010;  //!< m (the PS-SLAM paper: 10 mm)
+    double sigmaBearing =
+        3.0 * 3.14159265358979 / 180;  //!< rad (the PS-SLAM paper: 3 deg)
 };
 
 /** Expected (range, bearing) of a landmark seen from a sensor pose (world). */

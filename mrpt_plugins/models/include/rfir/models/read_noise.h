@@ -9,7 +9,7 @@
 #include <cmath>
 
 namespace rfir::models {
-/** The seeds' step model, log of thesis eq. 3.7 with per-axis sigma =
+/** The papers' step model, log of thesis eq. 3.7 with per-axis sigma =
  * half-size: 0 if |ex| < hx and |ey| < hy, else
  * log(beta) - ex^2/(2hx^2) - ey^2/(2hy^2). */
 class CStepReadNoise {

@@ -10,12 +10,13 @@
 
 namespace rfir::models {
 struct TagParticleFilterParams {
-    size_t numParticles = 100;  //!< L (seeds: 100 in 004, 150 in 003)
+    size_t numParticles =
+        100;  //!< L (the papers: 100 in the PS-SLAM paper, 150 in the PF-SLAM paper)
     ResamplingScheme resampling = ResamplingScheme::Systematic;
-    /** Resample when ESS / L falls below this; 1 = every update (the seed). */
+    /** Resample when ESS / L falls below this; 1 = every update (the papers). */
     double essThreshold = 1.0;
     /** Std (m) of a Gaussian jitter added after each resampling to fight the
-     * collapse of a step likelihood; 0 = the seed's literal algorithm. */
+     * collapse of a step likelihood; 0 = the papers' literal algorithm. */
     double rougheningSigma = 0.0;
 };
 

@@ -1,4 +1,4 @@
-/* rfir: offline smoothing of a SLAM run (beyond the seeds). A filter's estimate
+/* rfir: offline smoothing of a SLAM run (beyond the papers). A filter's estimate
  * at time t uses only the data up to t, so the first pass over new ground
  * keeps its odometry drift, and independent per-tag filters keep it in the map
  * (docs/slam.md, "Known gaps"). Offline, the whole log is known: this smoother

@@ -11,7 +11,7 @@
 namespace rfir::slam {
 struct TGraphSmootherOptions : public mrpt::config::CLoadableOptions {
     /** ceres: the robust smoother (step-shaped reads, negative information,
-     * kidnap cuts, odometry bias); lm: the former hand-written Gauss-Newton
+     * kidnap cuts, odometry bias); lm: a simpler hand-written Gauss-Newton
      * with Gaussian reads, kept for the side-by-side measurement. */
     std::string solver = "ceres";
     /** Robust losses (none, huber, cauchy) and their scales in whitened

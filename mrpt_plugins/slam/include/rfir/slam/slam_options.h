@@ -29,7 +29,7 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
     mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling =
         mrpt::bayes::CParticleFilter::prSystematic;
     /** Resample when the normalised effective sample size drops below this;
-     * 1 resamples on every step, as the seeds' algorithms do. */
+     * 1 resamples on every step, as the papers' algorithms do. */
     double resample_ess = 0.5;
     double start_std_xy = 0.0;   //!< m, initial spread about the start pose
     double start_std_phi = 0.0;  //!< rad
@@ -38,7 +38,7 @@ struct TSlamOptions : public mrpt::config::CLoadableOptions {
     TTagUpdatePose tag_update_pose = TTagUpdatePose::Posterior;
     /** PF/PS: tags mapped from an uncertain robot follow the robot's later
      * corrections through their cross-covariance with it (tag_correlation.h;
-     * off: the seeds' algorithm, the map keeps a first lap's drift). */
+     * off: the papers' algorithm, the map keeps a first lap's drift). */
     bool map_correction = false;
     /** m: a tag whose share of the robot's position error falls below this
      * stops following the robot. */

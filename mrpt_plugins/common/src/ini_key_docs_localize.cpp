@@ -9,7 +9,8 @@ constexpr const char* kLik = "MetricMap_irEmitterMap_*_likelihoodOpts";
 const std::vector<TKeyRow> kLocalize = {
     // [localization]
     {"localization", "num_particles", "particles",
-     "robot particles M; fewer than 500 make late first fixes fail more often"},
+     "robot particles M; too few fail to settle when the first unique ID comes late "
+     "(docs/results_ir.md)"},
     {"localization", "init_area", "m",
      "'x0 y0 x1 y1': the initial particles are uniform over this box and every heading"},
     {"localization", "init_margin", "m",

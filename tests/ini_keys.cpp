@@ -2,6 +2,7 @@
 #include "ini_keys.h"
 
 #include <rfir/common/ini_file.h>
+#include <rfir/common/ini_key_docs.h>
 #include <rfir/models/ini_reader.h>
 #include <rfir/sim/simulator.h>
 #include <rfir/slam/slam_config.h>
@@ -76,7 +77,7 @@ std::vector<std::pair<std::string, std::string>> keysOf(const std::string& file)
     return out;
 }
 
-std::string referenceTable() {
+std::vector<rfir::ini::TKeySpec> recordAllKeys() {
     const char* names[] = {"rfir-slam", "rfir-sim", "rfir-localize"};
     for (const auto& ini : stockInis()) {
         rfir::ini::setRecording(true, names[int(ini.kind)]);
@@ -87,12 +88,29 @@ std::string referenceTable() {
     mrpt::config::CConfigFileMemory empty;
     rfir::slam::loadSlamConfig(empty);
     rfir::ini::setRecording(false);
+    return rfir::ini::recordedKeys();
+}
+
+namespace {
+/** A table cell: '|' would end it, '<' start an HTML tag. */
+std::string cell(const std::string& s) {
+    std::string o;
+    for (char c : s)
+        o += c == '|' ? "\\|" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : std::string(1, c);
+    return o;
+}
+}  // namespace
+
+std::string referenceTable() {
     std::ostringstream o;
-    o << "| program | section | key | type | default | range |\n"
-      << "|---|---|---|---|---|---|\n";
-    for (const auto& k : rfir::ini::recordedKeys())
-        o << "| " << k.program << " | " << k.section << " | " << k.key << " | " << k.type
-          << " | " << k.def << " | " << k.range << " |\n";
+    o << "| program | section | key | meaning | unit | type | default | range |\n"
+      << "|---|---|---|---|---|---|---|---|\n";
+    for (const auto& k : recordAllKeys()) {
+        const auto* d = rfir::common::findKeyDoc(k.program, k.section, k.key);
+        o << "| " << k.program << " | " << k.section << " | " << k.key << " | "
+          << cell(d ? d->meaning : "(none)") << " | " << cell(d ? d->unit : "") << " | "
+          << k.type << " | " << k.def << " | " << k.range << " |\n";
+    }
     return o.str();
 }
 }  // namespace rfir_test

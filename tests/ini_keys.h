@@ -2,6 +2,8 @@
  * set to a given value (for docs/ini-reference.md and the bad-value sweep). */
 #pragma once
 
+#include <rfir/models/ini_reader.h>
+
 #include <string>
 #include <vector>
 
@@ -20,6 +22,9 @@ void loadWith(const TStockIni& ini, const std::string& section, const std::strin
 
 /** The (section, key) pairs present in an INI file. */
 std::vector<std::pair<std::string, std::string>> keysOf(const std::string& file);
+
+/** Every key the loaders read on the stock INIs (and the slam defaults). */
+std::vector<rfir::ini::TKeySpec> recordAllKeys();
 
 /** docs/ini-reference.md's table as the loaders declare it. */
 std::string referenceTable();

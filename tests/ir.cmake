@@ -9,4 +9,4 @@ rfir_add_test(test_ir_localize
 rfir_add_test(test_ir_apps
   SOURCES test_ir_apps.cpp
   LIBS rfir_ir rfir_sim rfir_appcommon)
-add_dependencies(test_ir_apps rfir-localize rfir-ids)
+add_dependencies(test_ir_apps rfir-localize rfir-ids rfir-sim)

@@ -3,6 +3,7 @@
  * either inside its documented range or refused naming section and key. */
 #include "ini_keys.h"
 
+#include <rfir/common/ini_key_docs.h>
 #include <rfir/models/ini_reader.h>
 #include <rfir/slam/slam_config.h>
 
@@ -13,6 +14,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace {
@@ -70,6 +72,60 @@ TEST(IniReference, DocIsTheLoadersTable) {
     EXPECT_EQ(slurp(kDoc).substr(a + kBegin.size(), table.size()), table)
         << "docs/ini-reference.md is out of date; the table is:\n"
         << table;
+}
+
+// Every key a loader reads has a meaning and a unit (rfir/common/ini_key_docs.h),
+// and every entry there is a key some loader reads: a new key cannot go
+// undocumented, nor a removed one stay in the docs.
+TEST(IniReference, EveryKeyHasAMeaning) {
+    const std::set<std::string> programs = {"rfir-slam", "rfir-sim", "rfir-localize"};
+    std::set<const rfir::common::TKeyDoc*> used;
+    size_t keys = 0;
+    for (const auto& k : rfir_test::recordAllKeys()) {
+        if (!programs.count(k.program)) continue;
+        keys++;
+        const auto* d = rfir::common::findKeyDoc(k.program, k.section, k.key);
+        if (!d) {
+            ADD_FAILURE() << k.program << " [" << k.section << "] " << k.key
+                          << ": no meaning in mrpt_plugins/common/src/ini_key_docs_*.cpp";
+            continue;
+        }
+        used.insert(d);
+    }
+    EXPECT_GT(keys, 200u);
+    for (const auto& d : rfir::common::iniKeyDocs()) {
+        EXPECT_TRUE(used.count(&d)) << d.program << " [" << d.section << "] " << d.key
+                                    << ": described, but no loader reads it";
+        EXPECT_TRUE(programs.count(d.program)) << d.program;
+        EXPECT_FALSE(d.unit.empty()) << d.section << " " << d.key;
+        // One sentence: long enough to say something, short enough for a comment.
+        EXPECT_GE(d.meaning.size(), 10u) << d.section << " " << d.key;
+        EXPECT_LE(d.meaning.size(), 240u) << d.section << " " << d.key;
+    }
+}
+
+// settings.ini's comments: each described key line gets its meaning and unit
+// before it; the key lines themselves are unchanged.
+TEST(IniReference, AnnotatedIniKeepsItsKeyLines) {
+    const std::string ini =
+        "# head\n[slam]\nmethod = pf\nrobot_particles = 5 // MRPT's comment\n"
+        "nosuch = 1\n\n[motion]\na3=0.06\n";
+    const std::string out = rfir::common::annotateIni(ini, "rfir-slam");
+    std::string keyLines;
+    std::istringstream in(out);
+    for (std::string l; std::getline(in, l);)
+        if (l.rfind("# ", 0) != 0 || l == "# head") keyLines += l + "\n";
+    EXPECT_EQ(keyLines, ini);
+    const auto* a3 = rfir::common::findKeyDoc("rfir-slam", "motion", "a3");
+    ASSERT_NE(a3, nullptr);
+    EXPECT_NE(out.find("[" + a3->unit + "]\na3=0.06"), std::string::npos) << out;
+    EXPECT_NE(out.find("# the estimator"), std::string::npos) << out;
+    // The same key in another section or program is another key.
+    EXPECT_EQ(rfir::common::findKeyDoc("rfir-sim", "motion", "a3"), nullptr);
+    EXPECT_NE(
+        rfir::common::findKeyDoc(
+            "rfir-localize", "MetricMap_irEmitterMap_07_likelihoodOpts", "sigma_volts"),
+        nullptr);
 }
 
 // Every key of every stock INI, in turn, at values MRPT would let through.

@@ -213,6 +213,36 @@ TEST(IRApps, LocalizeRejectsUnknownIniKeyAndSection) {
         << err;
 }
 
+// --help-keys (rfir-localize, rfir-sim): the INI's keys with --set applied
+// and their meanings, exit 0, nothing read or written; a bad edit exits 2.
+TEST(IRApps, HelpKeysListTheConfiguration) {
+    std::string out, err;
+    ASSERT_EQ(sh(kBin + "rfir-localize --help-keys --set localization.num_particles=300",
+                 &out, &err),
+              0)
+        << err;
+    EXPECT_NE(out.find("[localization]\nassociation_max_std = "), std::string::npos)
+        << out;
+    EXPECT_NE(out.find("\nnum_particles = 300\n    robot particles M"), std::string::npos)
+        << out;
+    EXPECT_NE(out.find("\nsigma_volts = "), std::string::npos) << out;
+    EXPECT_EQ(out.find("(no description)"), std::string::npos) << out;
+    EXPECT_EQ(
+        sh(kBin + "rfir-localize --help-keys --set localization.nosuch=1", &out, &err),
+        2);
+    EXPECT_NE(err.find("localization.nosuch"), std::string::npos) << err;
+    ASSERT_EQ(
+        sh(kBin + "rfir-sim --help-keys --config sim_kidnap --set trajectory.speed=0.3",
+           &out, &err),
+        0)
+        << err;
+    EXPECT_NE(out.find("\nspeed = 0.3\n    the robot's constant speed"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("[kidnap]\n"), std::string::npos) << out;
+    EXPECT_EQ(out.find("(no description)"), std::string::npos) << out;
+}
+
 TEST(IRApps, LocalizeBadEmitterFileNamesLine) {
     const std::string em = kDir + "/bad_emitters.txt";
     std::ofstream(em)

@@ -70,6 +70,9 @@ TEST(SlamApp, WritesEveryOutput) {
     EXPECT_NE(r.out.find("Robot localization"), std::string::npos) << r.out;
     EXPECT_EQ(nlohmann::json::parse(slurp(out + "/stats.json")).at("steps"), 301);
     EXPECT_NE(slurp(out + "/settings.ini").find("robot_update"), std::string::npos);
+    // Each key line has its meaning and unit as a comment above it.
+    EXPECT_NE(slurp(out + "/settings.ini").find("[particles]\nrobot_particles = "),
+              std::string::npos);
     EXPECT_NE(slurp(out + "/map.txt").find("\ntag "), std::string::npos);  // tag lines
     // The effective settings reproduce the run exactly.
     const std::string out2 = d + "/out_again";
@@ -77,6 +80,23 @@ TEST(SlamApp, WritesEveryOutput) {
                         " --seed 3 --config " + out + "/settings.ini");
     ASSERT_EQ(r2.code, 0) << r2.out;
     EXPECT_EQ(slurp(out + "/path.tum"), slurp(out2 + "/path.tum"));
+}
+
+// --help-keys: the keys of the configuration with --set applied, each with
+// its meaning; nothing read or written, a bad edit a command-line error.
+TEST(SlamApp, HelpKeysListsTheConfiguration) {
+    const auto r = run("--help-keys --method ps --set slam.robot_particles=200");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("[slam]\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("robot_particles = 200\n    robot particles M"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("\nmethod = ps\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\nlag = "), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("(no description)"), std::string::npos) << r.out;
+    const auto bad = run("--help-keys --set slam.nosuch=1");
+    EXPECT_EQ(bad.code, 2) << bad.out;
+    EXPECT_NE(bad.out.find("slam.nosuch"), std::string::npos) << bad.out;
 }
 
 // The program on the simulator's rawlog gives the run of the in-memory

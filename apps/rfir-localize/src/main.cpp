@@ -6,6 +6,7 @@
 #include <rfir/localize/localize_run.h>
 
 #include <rfir/common/cli.h>
+#include <rfir/common/ini_key_docs.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/eval/input_formats.h>
 #include <rfir/eval/metrics.h>
@@ -14,6 +15,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/core/exceptions.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -87,18 +89,38 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
         std::cerr << "rfir-localize: warning: no unique-ID reading: no estimate\n";
     return 0;
 }
+
+/** --help-keys: the keys of the INI with the --set edits, on stdout. */
+int listKeys(const rfir::localize::TConfig& cfg, const std::string& emitters) {
+    std::cout << rfir::common::describeKeys("rfir-localize", [&] {
+        std::string text;
+        rfir::common::loadWithIniEdits(cfg.overrides,
+                                       [&](const std::vector<std::string>& e) {
+                                           auto c = cfg;
+                                           c.overrides = e;
+                                           rfir::localize::loadConfig(c, emitters, false);
+                                           text = rfir::localize::settingsIni(c, "");
+                                       });
+        return text;
+    });
+    return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
+    // --help-keys reads no rawlog and writes nothing: those options are then
+    // optional.
+    const bool keysOnly =
+        std::find(argv, argv + argc, std::string("--help-keys")) != argv + argc;
     TCLAP::CmdLine cmd(kDescription, ' ', RFIR_VERSION);
     TCLAP::ValueArg<std::string> rawlog(
         "", "rawlog", std::string("input rawlog") + rfir::common::kRawlogClassesHelp,
-        true, "", "FILE", cmd);
+        !keysOnly, "", "FILE", cmd);
     TCLAP::ValueArg<std::string> emitters(
         "", "emitters", "emitter map file (emitter <id> <x> <y> <z>); overrides the INI",
         false, "", "FILE", cmd);
-    TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", true, "", "DIR",
-                                        cmd);
+    TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", !keysOnly, "",
+                                        "DIR", cmd);
     rfir::common::CConfigArg config(
         "", "config",
         "INI file, or a stock one by name (e.g. ir_localize); default: the stock one",
@@ -118,6 +140,7 @@ int main(int argc, char** argv) {
         "e.g. --set localization.num_particles=300",
         false, "SECTION.KEY=VALUE", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
+    TCLAP::SwitchArg helpKeys("", "help-keys", rfir::common::kHelpKeysHelp, cmd);
     try {
         if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
             return *code;
@@ -132,6 +155,7 @@ int main(int argc, char** argv) {
         cfg.odometryOnly = odoOnly.getValue();
         cfg.quiet = quiet.getValue();
         cfg.overrides = sets.getValue();
+        if (helpKeys.getValue()) return listKeys(cfg, emitters.getValue());
         return run(cfg, emitters.getValue(), joinArgs(argc, argv));
     } catch (const rfir::common::CUsageError& e) {  // thrown before any work
         std::cerr << "rfir-localize: error: " << e.what() << "\n";

@@ -1,6 +1,8 @@
 /* rfir-sim: simulates one run of the papers' setups from an INI file and writes
  * its rawlog and ground truth. See docs/simulator.md. */
 #include <rfir/common/cli.h>
+#include <rfir/common/ini_file.h>
+#include <rfir/common/ini_key_docs.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/obs/registerAllClasses.h>
 #include <rfir/sim/simulator.h>
@@ -69,18 +71,35 @@ int run(const std::string& ini, const std::vector<std::string>& sets,
     if (!quiet) std::cerr << "rfir-sim: wrote " << dir << "/" << name << ".*\n";
     return 0;
 }
+/** --help-keys: the keys of the INI with the --set edits, on stdout. */
+int listKeys(const std::string& ini, const std::vector<std::string>& sets) {
+    std::cout << rfir::common::describeKeys("rfir-sim", [&] {
+        std::string text;
+        rfir::common::loadWithIniEdits(sets, [&](const std::vector<std::string>& e) {
+            rfir::sim::loadSimConfig(ini, e);
+            auto f = rfir::common::readIniFile(ini);
+            rfir::common::applyIniOverrides(f, e);
+            text = f.getContent();
+        });
+        return text;
+    });
+    return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
     try {
         rfir::obs::registerAllClasses();
+        // --help-keys simulates nothing: no output directory then.
+        const bool keysOnly =
+            std::find(argv, argv + argc, std::string("--help-keys")) != argv + argc;
         TCLAP::CmdLine cmd(kDescription, ' ', RFIR_VERSION);
         rfir::common::CConfigArg ini(
             "c", "config",
             "simulation INI file, or a stock one by name (e.g. sim_kidnap)", true, cmd,
             "sim_");
         TCLAP::ValueArg<std::string> dir("", "out-dir", "output directory (created)",
-                                         true, "", "DIR", cmd);
+                                         !keysOnly, "", "DIR", cmd);
         rfir::common::CNumberArg<uint64_t> seed("s", "seed", "random seed (default 1)",
                                                 false, 1, "N", cmd);
         TCLAP::ValueArg<std::string> name("n", "name",
@@ -91,10 +110,13 @@ int main(int argc, char** argv) {
             "override an INI key, e.g. --set trajectory.speed=0.3 (repeatable)", false,
             "SECTION.KEY=VALUE", cmd);
         TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);
+        TCLAP::SwitchArg helpKeys("", "help-keys", rfir::common::kHelpKeysHelp, cmd,
+                                  false);
         // -o was the folder here but is a file elsewhere (rfir-import).
         if (const auto code =
                 rfir::common::parseCommandLine(cmd, argc, argv, {{"-o", "--out-dir"}}))
             return *code;
+        if (helpKeys.getValue()) return listKeys(ini.getValue(), sets.getValue());
         return run(ini.getValue(), sets.getValue(), dir.getValue(), seed.getValue(),
                    name.getValue(), quiet.getValue());
     } catch (const rfir::common::CUsageError& e) {  // thrown before any work

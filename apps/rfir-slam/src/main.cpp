@@ -2,12 +2,19 @@
 #include <rfir/slamapp/slam_app.h>
 
 #include <rfir/common/cli.h>
+#include <rfir/common/ini_key_docs.h>
 
+#include <algorithm>
 #include <iostream>
 #include <vector>
 
 int main(int argc, char** argv) {
     try {
+        std::vector<std::string> args(argv, argv + argc);
+        // --help-keys reads no rawlog and writes nothing: those options are
+        // then optional.
+        const bool listKeys =
+            std::find(args.begin(), args.end(), "--help-keys") != args.end();
         TCLAP::CmdLine cmd(
             "rfir-slam: PF-SLAM, PS-SLAM or FastSLAM on a project rawlog. Writes "
             "path.tum, map.txt, settings.ini, stats.json, path_map.png, scene.3Dscene "
@@ -15,8 +22,8 @@ int main(int argc, char** argv) {
             ' ', RFIR_VERSION);
         TCLAP::ValueArg<std::string> rawlog(
             "", "rawlog", std::string("input rawlog") + rfir::common::kRawlogClassesHelp,
-            true, "", "FILE", cmd);
-        TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", true, "",
+            !listKeys, "", "FILE", cmd);
+        TCLAP::ValueArg<std::string> outDir("", "out-dir", "output folder", !listKeys, "",
                                             "DIR", cmd);
         std::vector<std::string> methods = {"pf", "ps", "fastslam", "odometry"};
         TCLAP::ValuesConstraint<std::string> methodNames(methods);
@@ -52,7 +59,8 @@ int main(int argc, char** argv) {
             "path_map_smoothed.png, errors_smoothed.json",
             cmd, false);
         TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);
-        std::vector<std::string> args(argv, argv + argc);
+        TCLAP::SwitchArg helpKeys("", "help-keys", rfir::common::kHelpKeysHelp, cmd,
+                                  false);
         rfir::common::foldOptionValues(args, "--start", 3);
         if (const auto code = rfir::common::parseCommandLine(cmd, args)) return *code;
 
@@ -69,6 +77,7 @@ int main(int argc, char** argv) {
         a.smooth = smooth.getValue();
         a.sets = sets.getValue();
         a.quiet = quiet.getValue();
+        a.helpKeys = helpKeys.getValue();
         return rfir::slamapp::runSlamApp(a);
     } catch (const rfir::common::CUsageError& e) {  // thrown before any work
         std::cerr << "rfir-slam: error: " << e.what() << "\n";

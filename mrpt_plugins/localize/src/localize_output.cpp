@@ -1,4 +1,5 @@
 /* rfir-localize: the output files. */
+#include <rfir/common/ini_key_docs.h>
 #include <rfir/common/install_paths.h>
 #include <rfir/localize/localize_output.h>
 
@@ -199,7 +200,7 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
     rfir::common::writeFileAtomically(settings, [&](std::ostream& o) {
         o << "# rfir-localize " << rfir::common::rfirVersion() << "; INI " << cfg.iniPath
           << " (md5 " << rfir::common::fileMD5(cfg.iniPath) << "); files:" << list << "\n"
-          << settingsIni(cfg, commandLine);
+          << rfir::common::annotateIni(settingsIni(cfg, commandLine), "rfir-localize");
     });
     out.commit();
     return table;

@@ -5,6 +5,7 @@
 
 #include <rfir/common/atomic_file.h>
 #include <rfir/common/ini_file.h>
+#include <rfir/common/ini_key_docs.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/common/json.h>
 #include <rfir/common/map_io.h>
@@ -206,11 +207,11 @@ void writeSettingsAndStats(rfir::common::COutputFolder& out,
     const std::string id = rfir::common::runIdentityJson(seed, ini, files);
     std::string list;
     for (const auto& f : files) list += " " + f;
-    const std::string settings = "# rfir-slam " + rfir::common::rfirVersion() + ": " +
-                                 rfir::common::processCommandLine() + "\n# seed " +
-                                 std::to_string(seed) + ", INI " + ini + " (md5 " +
-                                 rfir::common::fileMD5(ini) + ")\n# files:" + list +
-                                 "\n" + rfir::slam::dumpSlamConfig(cfg);
+    const std::string settings =
+        "# rfir-slam " + rfir::common::rfirVersion() + ": " +
+        rfir::common::processCommandLine() + "\n# seed " + std::to_string(seed) +
+        ", INI " + ini + " (md5 " + rfir::common::fileMD5(ini) + ")\n# files:" + list +
+        "\n" + rfir::common::annotateIni(rfir::slam::dumpSlamConfig(cfg), "rfir-slam");
     rfir::common::writeFileAtomically(settingsPath,
                                       [&](std::ostream& o) { o << settings; });
     rfir::common::writeFileAtomically(statsPath, [&](std::ostream& o) {
@@ -339,6 +340,11 @@ int runSlamApp(const TAppArgs& args) {
     if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
     const std::string ini =
         a.config ? *a.config : rfir::common::slamIniPath(a.method.value_or("pf"));
+    if (a.helpKeys) {
+        std::cout << rfir::common::describeKeys(
+            "rfir-slam", [&] { return rfir::slam::dumpSlamConfig(loadConfig(ini, a)); });
+        return 0;
+    }
     rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
     cfg.seed = a.seed;
     findGroundTruth(a);

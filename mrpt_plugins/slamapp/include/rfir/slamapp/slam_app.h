@@ -21,9 +21,12 @@ struct TAppArgs {
     std::vector<std::string> sets;
     /** --quiet: no progress or summary on stderr. */
     bool quiet = false;
+    /** --help-keys: list the configuration's INI keys on stdout, run nothing. */
+    bool helpKeys = false;
 };
 
-/** Runs SLAM and writes every output; returns the process exit code.
+/** Runs SLAM and writes every output (with helpKeys, only lists the keys);
+ * returns the process exit code.
  * Throws std::exception with a message for the user on bad input. */
 int runSlamApp(const TAppArgs& a);
 

@@ -161,7 +161,7 @@ def localize(log, config=None, seed=1, emitters=None, gt_path=None, sets=(),
                           error_table=r["error_table"])
 
 
-def evaluate(path, gt_path, map=None, gt_map=None, rawlog=None, label="", kind=None,
+def evaluate(path, gt_path, map=None, gt_map=None, rawlog=None, label="estimate", kind=None,
              at_gt_times=False, no_odometry=False, segments=0, start=None):
     """rfir-eval: the errors of a path (a TUM file, an n x 4 array or a
     SlamResult/LocalizeResult) and of a map (a file, a Landmarks or, with a

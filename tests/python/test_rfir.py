@@ -121,6 +121,24 @@ class Slam(Work):
         self.assertTrue(done)
         self.assertLess(gap, 0.5 * total, "longest pause %.3f s of %.3f s" % (gap, total))
 
+    def test_concurrent_runs_are_the_sequential_ones(self):
+        """Runs in threads at once (the GIL released) give the paths of the
+        same runs one after the other."""
+        seeds = (7, 8, 9)
+        alone = [rfir.slam(RFID + ".rawlog", config="slam_pf", seed=s).path for s in seeds]
+        together = {}
+
+        def run(s):
+            together[s] = rfir.slam(RFID + ".rawlog", config="slam_pf", seed=s).path
+
+        threads = [threading.Thread(target=run, args=(s,)) for s in seeds]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        for s, p in zip(seeds, alone):
+            self.assertTrue(np.array_equal(together[s], p), "seed %d" % s)
+
 
 class Localize(Work):
     def test_equals_rfir_localize(self):

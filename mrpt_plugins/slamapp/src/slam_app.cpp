@@ -39,7 +39,7 @@ using rfir::common::TPath2D;
 namespace {
 /** stderr, or a sink under --quiet (warnings still go to stderr). */
 std::ostream& logStream(const TAppArgs& a) {
-    static std::ostream sink(nullptr);
+    static thread_local std::ostream sink(nullptr);  // runs in threads (Python)
     return a.quiet ? sink : std::cerr;
 }
 

@@ -85,6 +85,20 @@ class Slam(Work):
         again = rfir.slam(RFID + ".rawlog", config="slam_pf", seed=7)
         self.assertTrue(np.array_equal(r.path, again.path))
 
+    def test_smooth_equals_rfir_slam(self):
+        program("rfir-slam", "--rawlog", RFID + ".rawlog", "--config", "slam_ps",
+                "--smooth", "--out-dir", self.out("prog"), "-q")
+        r = rfir.slam(RFID + ".rawlog", config="slam_ps", smooth=True)
+        rfir.save_tum(r.smoothed_path, self.out("mem.tum"))
+        self.assertEqual(read(self.out("prog/path_smoothed.tum")), read(self.out("mem.tum")))
+        rfir.save_map(r.smoothed_landmarks, self.out("mem_map.txt"))  # as printed
+        self.assertEqual(rfir.load_map(self.out("mem_map.txt")).entries,
+                         rfir.load_map(self.out("prog/map_smoothed.txt")).entries)
+        self.assertEqual(r.smoothed_errors,
+                         json.loads(read(self.out("prog/errors_smoothed.json"), "r")))
+        self.assertEqual(r.stats["smoother"]["iterations"],
+                         json.loads(read(self.out("prog/stats.json"), "r"))["smoother"]["iterations"])
+
     def test_sets_and_ini_file(self):
         ini = os.path.join(SRC, "config_ini", "slam_pf.ini")
         sets = ["slam.robot_particles=20"]

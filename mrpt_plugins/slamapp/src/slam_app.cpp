@@ -342,6 +342,26 @@ TScored smoothAndWrite(const TAppArgs& a, rfir::common::COutputFolder* out,
                          rfir::slam::methodName(cfg.slam.method) + " smoothed",
                          "<tag> <id> <x> <y> <sx> <sy>");
 }
+/** The run's values in the result, and the error table of its rows. */
+void fillResult(TSlamAppResult& res, TScored main, std::optional<TScored> smoothed) {
+    std::vector<rfir::eval::TEvalResult> rows;
+    if (main.errors) {
+        res.errorsJson = rfir::eval::toJson(*main.errors);
+        rows.push_back(std::move(*main.errors));
+    }
+    if (smoothed) {
+        res.smoothedPath = std::move(smoothed->path);
+        res.smoothedMap = std::move(smoothed->map);
+        if (smoothed->errors) {
+            res.smoothedErrorsJson = rfir::eval::toJson(*smoothed->errors);
+            smoothed->errors->odometry.reset();  // the odometry row is printed once
+            rows.push_back(std::move(*smoothed->errors));
+        }
+    }
+    if (!rows.empty()) res.errorTable = rfir::eval::formatErrorTable(rows);
+    res.path = std::move(main.path);
+    res.map = std::move(main.map);
+}
 }  // namespace
 
 TSlamAppResult runSlam(const TAppArgs& args) {
@@ -413,23 +433,7 @@ TSlamAppResult runSlam(const TAppArgs& args) {
             statsJson(cfg, run, a.seed, rfir::common::runIdentityJson(a.seed, ini, {}),
                       smootherStats);
     }
-    std::vector<rfir::eval::TEvalResult> rows;
-    if (main.errors) {
-        res.errorsJson = rfir::eval::toJson(*main.errors);
-        rows.push_back(std::move(*main.errors));
-    }
-    if (smoothed) {
-        res.smoothedPath = std::move(smoothed->path);
-        res.smoothedMap = std::move(smoothed->map);
-        if (smoothed->errors) {
-            res.smoothedErrorsJson = rfir::eval::toJson(*smoothed->errors);
-            smoothed->errors->odometry.reset();  // the odometry row is printed once
-            rows.push_back(std::move(*smoothed->errors));
-        }
-    }
-    if (!rows.empty()) res.errorTable = rfir::eval::formatErrorTable(rows);
-    res.path = std::move(main.path);
-    res.map = std::move(main.map);
+    fillResult(res, std::move(main), std::move(smoothed));
     logStream(a) << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()
                  << " landmarks, " << std::fixed << std::setprecision(2)
                  << run.meanStepTime * 1e3 << " ms/update"

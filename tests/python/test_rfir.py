@@ -169,6 +169,13 @@ class Localize(Work):
         self.assertEqual(r.errors, json.loads(read(self.out("prog/errors.json"), "r")))
         self.assertGreater(len(r.path), 0)
 
+    def test_errors_name_the_cause(self):
+        with self.assertRaisesRegex(RuntimeError, "emitter_file"):
+            rfir.localize(IR + ".rawlog")  # the stock INI names no emitter file
+        with self.assertRaisesRegex(ValueError, "localization.num_particlez"):
+            rfir.localize(IR + ".rawlog", emitters=IR + ".gt_map.txt",
+                          sets=["localization.num_particlez=3"])
+
 
 class Evaluate(Work):
     def test_equals_rfir_eval(self):

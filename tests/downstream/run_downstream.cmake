@@ -81,3 +81,16 @@ endif()
 run("installed rfir-slam with its stock INI" ${prefix}/bin/rfir-slam
   --rawlog ${RFIR_SOURCE_DIR}/datasets/rfid_300mm_4tags_random_90s.rawlog
   --method ps --out-dir ${WORK_DIR}/slam_out)
+
+# The Python module from the prefix (docs/python.md): PYTHONPATH=<prefix>/lib/
+# python3/dist-packages, its stock INIs the prefix's, and rfir.slam's path
+# the installed rfir-slam's path.tum (same stock INI, seed 1), byte for byte.
+if(PYTHON_EXECUTABLE)
+  set(pydir ${prefix}/lib/python3/dist-packages)
+  expect_file(${pydir}/rfir/__init__.py)
+  run("import rfir from the prefix" ${CMAKE_COMMAND} -E env PYTHONPATH=${pydir}
+    ${PYTHON_EXECUTABLE} ${RFIR_SOURCE_DIR}/tests/python/check_install.py ${prefix}
+    ${RFIR_SOURCE_DIR}/datasets/rfid_300mm_4tags_random_90s.rawlog
+    ${WORK_DIR}/slam_out/path.tum ${WORK_DIR}/python_path.tum)
+  message(STATUS "${run_output}")
+endif()

@@ -36,34 +36,10 @@ std::string joinArgs(int argc, char** argv) {
     return s;
 }
 
-/** The ground truth: --gt-path, else <stem>.gt.tum beside the rawlog (as
- * rfir-slam); read before anything is written, so that a bad file fails
- * first. Its first pose (the dead reckoning's start without a known one). */
-std::optional<mrpt::poses::CPose2D> groundTruthStart(rfir::localize::TConfig& cfg) {
-    const std::string gt = rfir::common::rawlogStem(cfg.rawlogPath) + ".gt.tum";
-    if (cfg.gtPath.empty() && std::filesystem::exists(gt)) cfg.gtPath = gt;
-    if (cfg.gtPath.empty()) return std::nullopt;
-    const auto p = rfir::eval::loadTumChecked(cfg.gtPath);
-    if (p.empty()) return std::nullopt;
-    return p.front().pose;
-}
-
 int run(rfir::localize::TConfig& cfg, const std::string& emitters,
         const std::string& cmd) {
     namespace fs = std::filesystem;
-    // A --set edit the INI refuses is a command-line error naming it (checked
-    // before the emitter file is required), then the whole configuration.
-    rfir::common::loadWithIniEdits(cfg.overrides, [&](const std::vector<std::string>& e) {
-        auto c = cfg;
-        c.overrides = e;
-        rfir::localize::loadConfig(c, emitters, false);
-    });
-    rfir::localize::loadConfig(cfg, emitters);
-    if (fs::is_directory(cfg.rawlogPath))
-        throw std::runtime_error(cfg.rawlogPath + ": is a directory, not a rawlog file");
-    if (!fs::is_regular_file(cfg.rawlogPath))
-        throw std::runtime_error(cfg.rawlogPath + ": rawlog not found");
-    const auto gtStart = groundTruthStart(cfg);
+    const auto gtStart = rfir::localize::prepareRun(cfg, emitters);
     std::error_code ec;
     fs::create_directories(cfg.outDir, ec);
     if (!fs::is_directory(cfg.outDir))

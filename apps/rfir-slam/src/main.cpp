@@ -69,6 +69,9 @@ int main(int argc, char** argv) {
             a.start = {start.values()[0], start.values()[1], start.values()[2]};
         a.rawlog = rawlog.getValue();
         a.outDir = outDir.getValue();
+        // runSlam writes nothing without a folder (the Python module's runs).
+        if (a.outDir.empty())
+            throw rfir::common::CUsageError("--out-dir: an empty folder name");
         if (method.isSet()) a.method = method.getValue();
         if (config.isSet()) a.config = config.getValue();
         if (gtPath.isSet()) a.gtPath = gtPath.getValue();

@@ -6,7 +6,19 @@
 #include <stdexcept>
 
 namespace rfir::common {
+namespace {
+std::string& stockConfigDirOverride() {
+    static std::string dir;
+    return dir;
+}
+}  // namespace
+
+void setStockConfigDir(const std::string& dir) {
+    stockConfigDirOverride() = dir;
+}
+
 std::string stockConfigDir() {
+    if (!stockConfigDirOverride().empty()) return stockConfigDirOverride();
     char buf[4096];
     const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
     if (n <= 0)

@@ -206,4 +206,16 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
     return table;
 }
 
+TRunSummary summarize(const TConfig& cfg, const TRunResult& res) {
+    const TEvals ev = evaluate(cfg, res);
+    TRunSummary s;
+    if (!ev.rows.empty()) {
+        s.errorTable = rfir::eval::formatErrorTable(ev.rows);
+        s.errorsJson = rfir::eval::toJson(ev.rows[0]);
+    }
+    s.statsJson =
+        statsJson(cfg, res, ev, rfir::common::runIdentityJson(cfg.seed, cfg.iniPath, {}));
+    return s;
+}
+
 }  // namespace rfir::localize

@@ -1,7 +1,12 @@
 /* rfir-localize: one pass over a rawlog. */
 #include <rfir/localize/localize_run.h>
 
+#include <rfir/common/ini_override.h>
+#include <rfir/common/install_paths.h>
 #include <rfir/common/rawlog_io.h>
+#include <rfir/eval/input_formats.h>
+
+#include <filesystem>
 
 #include <chrono>
 #include <iostream>
@@ -25,6 +30,32 @@ void reportLost(const rfir::ir::TLocalizerStep& info, double t, TRunResult& res)
     }
 }
 }  // namespace
+
+std::optional<mrpt::poses::CPose2D> prepareRun(TConfig& cfg,
+                                               const std::string& emitters) {
+    namespace fs = std::filesystem;
+    // A --set edit the INI refuses is a command-line error naming it (checked
+    // before the emitter file is required), then the whole configuration.
+    rfir::common::loadWithIniEdits(cfg.overrides, [&](const std::vector<std::string>& e) {
+        auto c = cfg;
+        c.overrides = e;
+        loadConfig(c, emitters, false);
+    });
+    loadConfig(cfg, emitters);
+    if (fs::is_directory(cfg.rawlogPath))
+        throw std::runtime_error(cfg.rawlogPath + ": is a directory, not a rawlog file");
+    if (!fs::is_regular_file(cfg.rawlogPath))
+        throw std::runtime_error(cfg.rawlogPath + ": rawlog not found");
+    // The ground truth is read before anything is written, so that a bad
+    // file fails first; its first pose starts the dead reckoning without a
+    // known start.
+    const std::string gt = rfir::common::rawlogStem(cfg.rawlogPath) + ".gt.tum";
+    if (cfg.gtPath.empty() && fs::exists(gt)) cfg.gtPath = gt;
+    if (cfg.gtPath.empty()) return std::nullopt;
+    const auto p = rfir::eval::loadTumChecked(cfg.gtPath);
+    if (p.empty()) return std::nullopt;
+    return p.front().pose;
+}
 
 TRunResult runLocalization(const TConfig& cfg,
                            const std::optional<mrpt::poses::CPose2D>& gtStart) {

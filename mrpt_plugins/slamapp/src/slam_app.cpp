@@ -29,6 +29,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace rfir::slamapp {
@@ -39,7 +40,7 @@ using rfir::common::TPath2D;
 namespace {
 /** stderr, or a sink under --quiet (warnings still go to stderr). */
 std::ostream& logStream(const TAppArgs& a) {
-    static std::ostream sink(nullptr);
+    static thread_local std::ostream sink(nullptr);  // runs in threads (Python)
     return a.quiet ? sink : std::cerr;
 }
 
@@ -196,11 +197,12 @@ const std::vector<std::string> kOutputPatterns = {
     "path*.tum",      "map*.txt",        "path_map*.png", "errors*.json",
     "scene*.3Dscene", "error_time*.png", "settings.ini",  "stats.json"};
 
-/** settings.ini and stats.json, last: they name the run and every file it wrote. */
-void writeSettingsAndStats(rfir::common::COutputFolder& out,
-                           const rfir::slam::TSlamConfig& cfg,
-                           const rfir::slam::TSlamRun& run, uint64_t seed,
-                           const std::string& ini, const TJson& smoother) {
+/** settings.ini and stats.json, last: they name the run and every file it
+ * wrote. Returns stats.json's text. */
+std::string writeSettingsAndStats(rfir::common::COutputFolder& out,
+                                  const rfir::slam::TSlamConfig& cfg,
+                                  const rfir::slam::TSlamRun& run, uint64_t seed,
+                                  const std::string& ini, const TJson& smoother) {
     const std::string settingsPath = out.file("settings.ini");
     const std::string statsPath = out.file("stats.json");
     const auto files = out.files();
@@ -214,9 +216,9 @@ void writeSettingsAndStats(rfir::common::COutputFolder& out,
         "\n" + rfir::common::annotateIni(rfir::slam::dumpSlamConfig(cfg), "rfir-slam");
     rfir::common::writeFileAtomically(settingsPath,
                                       [&](std::ostream& o) { o << settings; });
-    rfir::common::writeFileAtomically(statsPath, [&](std::ostream& o) {
-        o << statsJson(cfg, run, seed, id, smoother);
-    });
+    const std::string stats = statsJson(cfg, run, seed, id, smoother);
+    rfir::common::writeFileAtomically(statsPath, [&](std::ostream& o) { o << stats; });
+    return stats;
 }
 
 /** Ground truth beside the rawlog unless given. */
@@ -265,37 +267,45 @@ void writeErrors(const std::string& file, const rfir::eval::TEvalResult& r) {
         file, [&](std::ostream& o) { o << rfir::eval::toJson(r) << "\n"; });
 }
 
+/** A run's path and map, and its errors against the ground truth if any. */
+struct TScored {
+    TPath2D path;
+    TMapFile map;
+    std::optional<rfir::eval::TEvalResult> errors;
+};
+
 /** path<sfx>.tum, map<sfx>.txt, path_map<sfx>.png and errors<sfx>.json of a
- * run, named `label` in the table, the figure and the map's header. */
-std::optional<rfir::eval::TEvalResult> writeAndScore(
-    const TAppArgs& a, rfir::common::COutputFolder& out, const TTruth& truth,
-    const rfir::slam::TSlamRun& run, const std::string& sfx, const std::string& label,
-    const std::string& legend) {
-    const TPath2D path = rfir::slam::stampedPath(run);
-    const TMapFile map = rfir::slam::landmarkEntries(run.map);
-    rfir::common::saveTUM(out.file("path" + sfx + ".tum"), path);
-    rfir::common::saveMapFile(out.file("map" + sfx + ".txt"), map,
-                              "rfir-slam " + label + ": " + legend);
+ * run, named `label` in the table, the figure and the map's header; only
+ * scored, nothing written, without `out`. */
+TScored writeAndScore(const TAppArgs& a, rfir::common::COutputFolder* out,
+                      const TTruth& truth, const rfir::slam::TSlamRun& run,
+                      const std::string& sfx, const std::string& label,
+                      const std::string& legend) {
+    TScored s{rfir::slam::stampedPath(run), rfir::slam::landmarkEntries(run.map), {}};
     rfir::eval::TMapFigure fig;
     fig.title = "rfir-slam " + label + ": " + mrpt::system::extractFileName(a.rawlog);
-    fig.estPath = path;
-    fig.estMap = map;
-    auto r = evaluate(truth, label, path, map, fig);
-    rfir::eval::plotMapFigure(out.file("path_map" + sfx + ".png"), fig);
-    rfir::eval::saveScene3D(out.file("scene" + sfx + ".3Dscene"), fig, truth.readers);
-    if (r) {
-        writeErrors(out.file("errors" + sfx + ".json"), *r);
-        rfir::eval::plotErrorsOverTime(out.file("error_time" + sfx + ".png"), *r,
+    fig.estPath = s.path;
+    fig.estMap = s.map;
+    s.errors = evaluate(truth, label, s.path, s.map, fig);
+    if (!out) return s;
+    rfir::common::saveTUM(out->file("path" + sfx + ".tum"), s.path);
+    rfir::common::saveMapFile(out->file("map" + sfx + ".txt"), s.map,
+                              "rfir-slam " + label + ": " + legend);
+    rfir::eval::plotMapFigure(out->file("path_map" + sfx + ".png"), fig);
+    rfir::eval::saveScene3D(out->file("scene" + sfx + ".3Dscene"), fig, truth.readers);
+    if (s.errors) {
+        writeErrors(out->file("errors" + sfx + ".json"), *s.errors);
+        rfir::eval::plotErrorsOverTime(out->file("error_time" + sfx + ".png"), *s.errors,
                                        fig.title);
     }
-    return r;
+    return s;
 }
 
 /** --smooth: the offline refinement of the filter's run and its outputs. */
-std::optional<rfir::eval::TEvalResult> smoothAndWrite(
-    const TAppArgs& a, rfir::common::COutputFolder& out,
-    const rfir::slam::TSlamConfig& cfg, const TLoaded& data, const TTruth& truth,
-    const mrpt::poses::CPose2D& start, const rfir::slam::TSlamRun& run, TJson& stats) {
+TScored smoothAndWrite(const TAppArgs& a, rfir::common::COutputFolder* out,
+                       const rfir::slam::TSlamConfig& cfg, const TLoaded& data,
+                       const TTruth& truth, const mrpt::poses::CPose2D& start,
+                       const rfir::slam::TSlamRun& run, TJson& stats) {
     const auto p = rfir::slam::smootherParams(cfg);
     logStream(a) << "rfir-slam: smoothing " << run.path.size() << " poses offline ("
                  << p.options.solver << ")\n";
@@ -333,18 +343,33 @@ std::optional<rfir::eval::TEvalResult> smoothAndWrite(
                          rfir::slam::methodName(cfg.slam.method) + " smoothed",
                          "<tag> <id> <x> <y> <sx> <sy>");
 }
+/** The run's values in the result, and the error table of its rows. */
+void fillResult(TSlamAppResult& res, TScored main, std::optional<TScored> smoothed) {
+    std::vector<rfir::eval::TEvalResult> rows;
+    if (main.errors) {
+        res.errorsJson = rfir::eval::toJson(*main.errors);
+        rows.push_back(std::move(*main.errors));
+    }
+    if (smoothed) {
+        res.smoothedPath = std::move(smoothed->path);
+        res.smoothedMap = std::move(smoothed->map);
+        if (smoothed->errors) {
+            res.smoothedErrorsJson = rfir::eval::toJson(*smoothed->errors);
+            smoothed->errors->odometry.reset();  // the odometry row is printed once
+            rows.push_back(std::move(*smoothed->errors));
+        }
+    }
+    if (!rows.empty()) res.errorTable = rfir::eval::formatErrorTable(rows);
+    res.path = std::move(main.path);
+    res.map = std::move(main.map);
+}
 }  // namespace
 
-int runSlamApp(const TAppArgs& args) {
+TSlamAppResult runSlam(const TAppArgs& args) {
     TAppArgs a = args;
     if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
     const std::string ini =
         a.config ? *a.config : rfir::common::slamIniPath(a.method.value_or("pf"));
-    if (a.helpKeys) {
-        std::cout << rfir::common::describeKeys(
-            "rfir-slam", [&] { return rfir::slam::dumpSlamConfig(loadConfig(ini, a)); });
-        return 0;
-    }
     rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
     cfg.seed = a.seed;
     findGroundTruth(a);
@@ -355,7 +380,10 @@ int runSlamApp(const TAppArgs& args) {
     logStream(a) << "rfir-slam: " << rfir::slam::methodName(cfg.slam.method) << " on "
                  << a.rawlog << " (config " << ini << ", seed " << a.seed << ")\n";
     // The folder is checked (and refused if it holds foreign files) before the run.
-    rfir::common::COutputFolder out(a.outDir, kOutputPatterns, "rfir-slam");
+    std::unique_ptr<rfir::common::COutputFolder> out;
+    if (!a.outDir.empty())
+        out = std::make_unique<rfir::common::COutputFolder>(a.outDir, kOutputPatterns,
+                                                            "rfir-slam");
     TLoaded data = readInputs(a.rawlog, cfg.motion);
     // Refused before the filter runs and anything is written.
     if (a.smooth)
@@ -388,27 +416,44 @@ int runSlamApp(const TAppArgs& args) {
 
     const TTruth truth = loadTruth(a, data.info);
     const bool counts = cfg.method() != rfir::slam::TMethod::FastSLAM;
-    auto errs = writeAndScore(
-        a, out, truth, run, "", rfir::slam::methodName(cfg.slam.method),
+    TScored main = writeAndScore(
+        a, out.get(), truth, run, "", rfir::slam::methodName(cfg.slam.method),
         counts ? "<tag or landmark> <id> <x> <y> <sx> <sy> <reads> <contradicted>"
                : "<tag or landmark> <id> <x> <y> <sx> <sy>");
-    std::optional<rfir::eval::TEvalResult> smoothed;
+    TSlamAppResult res;
+    std::optional<TScored> smoothed;
     TJson smootherStats;  // null unless smoothed
     if (a.smooth)
-        smoothed = smoothAndWrite(a, out, cfg, data, truth, start, run, smootherStats);
-    writeSettingsAndStats(out, cfg, run, a.seed, ini, smootherStats);
-    out.commit();
-    std::vector<rfir::eval::TEvalResult> rows;
-    if (errs) rows.push_back(std::move(*errs));
-    if (smoothed) {
-        smoothed->odometry.reset();  // the odometry row is printed once
-        rows.push_back(std::move(*smoothed));
+        smoothed =
+            smoothAndWrite(a, out.get(), cfg, data, truth, start, run, smootherStats);
+    if (out) {
+        res.statsJson = writeSettingsAndStats(*out, cfg, run, a.seed, ini, smootherStats);
+        out->commit();
+    } else {
+        res.statsJson =
+            statsJson(cfg, run, a.seed, rfir::common::runIdentityJson(a.seed, ini, {}),
+                      smootherStats);
     }
-    if (!rows.empty() && !a.quiet) std::cout << rfir::eval::formatErrorTable(rows);
+    fillResult(res, std::move(main), std::move(smoothed));
     logStream(a) << "rfir-slam: " << run.path.size() << " steps, " << run.map.size()
                  << " landmarks, " << std::fixed << std::setprecision(2)
-                 << run.meanStepTime * 1e3 << " ms/update; outputs in " << a.outDir
-                 << "\n";
+                 << run.meanStepTime * 1e3 << " ms/update"
+                 << (a.outDir.empty() ? "" : "; outputs in " + a.outDir) << "\n"
+                 << std::defaultfloat;
+    return res;
+}
+
+int runSlamApp(const TAppArgs& a) {
+    if (a.helpKeys) {
+        if (a.method) rfir::slam::parseMethod(*a.method);
+        const std::string ini =
+            a.config ? *a.config : rfir::common::slamIniPath(a.method.value_or("pf"));
+        std::cout << rfir::common::describeKeys(
+            "rfir-slam", [&] { return rfir::slam::dumpSlamConfig(loadConfig(ini, a)); });
+        return 0;
+    }
+    const TSlamAppResult res = runSlam(a);
+    if (!a.quiet) std::cout << res.errorTable;
     return 0;
 }
 

@@ -8,6 +8,9 @@ namespace rfir::common {
  * stock INIs, installed beside the programs and copied there by the build.
  * Throws std::runtime_error if the program's path cannot be read. */
 std::string stockConfigDir();
+/** Replaces stockConfigDir() for this process (non-empty `dir`): the Python
+ * module, whose program is the interpreter, points it at its prefix's. */
+void setStockConfigDir(const std::string& dir);
 /** The stock INI of a SLAM method in `dir`: "<dir>/slam_<m>.ini" with m
  * "fastslam", "ps", or "pf" for any other method (the ones without an INI of
  * their own run on PF-SLAM's). */

@@ -15,6 +15,13 @@ namespace rfir::localize {
 std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
                          const std::string& commandLine);
 
+/** In memory, what writeOutputs writes into stats.json (its "files" empty)
+ * and errors.json (empty without ground truth). */
+struct TRunSummary {
+    std::string statsJson, errorsJson, errorTable;
+};
+TRunSummary summarize(const TConfig& cfg, const TRunResult& res);
+
 /** The path's pose at each spot time (the latest pose not after it); spots
  * before the path's start are left out. */
 rfir::common::TPath2D atSpots(const rfir::common::TPath2D& path,

@@ -33,6 +33,12 @@ struct TRunResult {
     double seconds = 0;  //!< wall-clock time of the filter
 };
 
+/** rfir-localize's checks before a run: the INI with cfg.overrides (an edit
+ * it refuses is a CUsageError naming it), `emitters` (non-empty) over its
+ * emitter_file, the rawlog a file, cfg.gtPath (else <stem>.gt.tum beside the
+ * rawlog when there) read. Returns the ground truth's first pose, if any. */
+std::optional<mrpt::poses::CPose2D> prepareRun(TConfig& cfg, const std::string& emitters);
+
 /** Runs the filter (or only dead reckoning) over cfg.rawlogPath. `gtStart`:
  * the ground truth's first pose, if any. Progress on stderr unless quiet. */
 TRunResult runLocalization(const TConfig& cfg,

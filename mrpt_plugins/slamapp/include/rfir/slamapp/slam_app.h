@@ -1,6 +1,8 @@
 /* rfir-slam: the steps of one run, separate from the command line. */
 #pragma once
 
+#include <rfir/common/map_io.h>
+#include <rfir/common/trajectory_io.h>
 #include <rfir/slam/slam_config.h>
 
 #include <mrpt/poses/CPose2D.h>
@@ -11,6 +13,7 @@
 
 namespace rfir::slamapp {
 struct TAppArgs {
+    /** outDir empty: no files written (runSlam only). */
     std::string rawlog, outDir;
     std::optional<std::string> method, config, gtPath, gtMap;
     uint64_t seed = 1;
@@ -24,6 +27,24 @@ struct TAppArgs {
     /** --help-keys: list the configuration's INI keys on stdout, run nothing. */
     bool helpKeys = false;
 };
+
+/** One run in memory: what path.tum, map.txt, stats.json and errors.json
+ * hold (the files are written from these same values). */
+struct TSlamAppResult {
+    rfir::common::TPath2D path;
+    rfir::common::TMapFile map;
+    std::string statsJson;   //!< stats.json's text ("files" empty without outDir)
+    std::string errorsJson;  //!< errors.json's text; empty without ground truth
+    rfir::common::TPath2D smoothedPath;  //!< --smooth only
+    rfir::common::TMapFile smoothedMap;
+    std::string smoothedErrorsJson;
+    std::string errorTable;  //!< the table rfir-slam prints (empty: no truth)
+};
+
+/** Runs SLAM, writes every output into a.outDir unless it is empty, and
+ * returns the run. Throws std::exception with a message for the user on bad
+ * input. */
+TSlamAppResult runSlam(const TAppArgs& a);
 
 /** Runs SLAM and writes every output (with helpKeys, only lists the keys);
  * returns the process exit code.

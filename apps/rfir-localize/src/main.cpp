@@ -6,6 +6,7 @@
 #include <rfir/localize/localize_run.h>
 
 #include <rfir/common/cli.h>
+#include <rfir/common/gui_args.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/eval/input_formats.h>
 #include <rfir/eval/metrics.h>
@@ -13,6 +14,9 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/core/exceptions.h>
+#ifdef RFIR_WITH_GUI
+#include <rfir/view/CLiveView.h>
+#endif
 
 #include <filesystem>
 #include <iostream>
@@ -26,7 +30,9 @@ const char* kDescription =
     "settings.ini, path_map.png, emitter_health.txt and, with a ground-truth path "
     "(--gt-path, or <stem>.gt.tum beside the rawlog), errors.json and error_time.png "
     "(errors_spots.json with <stem>.spots.tum). "
-    "Default configuration: <exe_dir>/../share/rfir/config_ini/ir_localize.ini.";
+    "Default configuration: <exe_dir>/../share/rfir/config_ini/ir_localize.ini. "
+    "--gui shows the run live; --gui-record DIR also writes its frames as PNG files "
+    "(docs/live-view.md).";
 
 std::string joinArgs(int argc, char** argv) {
     std::string s;
@@ -46,8 +52,8 @@ std::optional<mrpt::poses::CPose2D> groundTruthStart(rfir::localize::TConfig& cf
     return p.front().pose;
 }
 
-int run(rfir::localize::TConfig& cfg, const std::string& emitters,
-        const std::string& cmd) {
+int run(rfir::localize::TConfig& cfg, const std::string& emitters, const std::string& cmd,
+        const rfir::localize::TStepObserver& onStep) {
     namespace fs = std::filesystem;
     // A --set edit the INI refuses is a command-line error naming it (checked
     // before the emitter file is required), then the whole configuration.
@@ -71,7 +77,7 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
                   << ", " << (cfg.odometryOnly ? "odometry only" : "M = ")
                   << (cfg.odometryOnly ? "" : std::to_string(cfg.params.numParticles))
                   << ", seed " << cfg.seed << "\n";
-    const auto res = rfir::localize::runLocalization(cfg, gtStart);
+    const auto res = rfir::localize::runLocalization(cfg, gtStart, onStep);
     const std::string table = rfir::localize::writeOutputs(cfg, res, cmd);
     if (!cfg.quiet) {
         std::cerr << "rfir-localize: " << res.steps << " instants, " << res.used << " of "
@@ -118,9 +124,24 @@ int main(int argc, char** argv) {
         "e.g. --set localization.num_particles=300",
         false, "SECTION.KEY=VALUE", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
+    rfir::common::CGuiArgs gui(cmd);
     try {
         if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
             return *code;
+        gui.check();
+        rfir::localize::TStepObserver onStep;
+#ifdef RFIR_WITH_GUI
+        std::unique_ptr<rfir::view::CLiveView> view;  // checks the display first
+        if (gui.requested()) {
+            view = std::make_unique<rfir::view::CLiveView>(rfir::view::TLiveViewOptions{
+                "rfir-localize", gui.recordDir(), gui.every()});
+            onStep = view->localizeObserver();
+        }
+#else
+        if (gui.requested())
+            throw rfir::common::CUsageError(
+                rfir::common::guiNotBuiltMessage("rfir-localize"));
+#endif
         rfir::obs::registerAllClasses();
         rfir::maps::registerIRClasses();
         rfir::localize::TConfig cfg;
@@ -132,7 +153,7 @@ int main(int argc, char** argv) {
         cfg.odometryOnly = odoOnly.getValue();
         cfg.quiet = quiet.getValue();
         cfg.overrides = sets.getValue();
-        return run(cfg, emitters.getValue(), joinArgs(argc, argv));
+        return run(cfg, emitters.getValue(), joinArgs(argc, argv), onStep);
     } catch (const rfir::common::CUsageError& e) {  // thrown before any work
         std::cerr << "rfir-localize: error: " << e.what() << "\n";
         return rfir::common::kUsageExitCode;

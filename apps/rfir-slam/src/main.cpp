@@ -2,8 +2,13 @@
 #include <rfir/slamapp/slam_app.h>
 
 #include <rfir/common/cli.h>
+#include <rfir/common/gui_args.h>
+#ifdef RFIR_WITH_GUI
+#include <rfir/view/CLiveView.h>
+#endif
 
 #include <iostream>
+#include <memory>
 #include <vector>
 
 int main(int argc, char** argv) {
@@ -11,7 +16,9 @@ int main(int argc, char** argv) {
         TCLAP::CmdLine cmd(
             "rfir-slam: PF-SLAM, PS-SLAM or FastSLAM on a project rawlog. Writes "
             "path.tum, map.txt, settings.ini, stats.json, path_map.png, scene.3Dscene "
-            "(and errors.json, error_time.png with ground truth) into --out-dir.",
+            "(and errors.json, error_time.png with ground truth) into --out-dir. --gui "
+            "shows the run live; --gui-record DIR also writes its frames as PNG files "
+            "(docs/live-view.md).",
             ' ', RFIR_VERSION);
         TCLAP::ValueArg<std::string> rawlog(
             "", "rawlog", std::string("input rawlog") + rfir::common::kRawlogClassesHelp,
@@ -52,9 +59,21 @@ int main(int argc, char** argv) {
             "path_map_smoothed.png, errors_smoothed.json",
             cmd, false);
         TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);
+        rfir::common::CGuiArgs gui(cmd);
         std::vector<std::string> args(argv, argv + argc);
         rfir::common::foldOptionValues(args, "--start", 3);
         if (const auto code = rfir::common::parseCommandLine(cmd, args)) return *code;
+        gui.check();
+#ifdef RFIR_WITH_GUI
+        std::unique_ptr<rfir::view::CLiveView> view;  // checks the display first
+        if (gui.requested())
+            view = std::make_unique<rfir::view::CLiveView>(
+                rfir::view::TLiveViewOptions{"rfir-slam", gui.recordDir(), gui.every()});
+#else
+        if (gui.requested())
+            throw rfir::common::CUsageError(
+                rfir::common::guiNotBuiltMessage("rfir-slam"));
+#endif
 
         rfir::slamapp::TAppArgs a;
         if (start.isSet())
@@ -69,6 +88,9 @@ int main(int argc, char** argv) {
         a.smooth = smooth.getValue();
         a.sets = sets.getValue();
         a.quiet = quiet.getValue();
+#ifdef RFIR_WITH_GUI
+        if (view) a.onStep = view->slamObserver();
+#endif
         return rfir::slamapp::runSlamApp(a);
     } catch (const rfir::common::CUsageError& e) {  // thrown before any work
         std::cerr << "rfir-slam: error: " << e.what() << "\n";

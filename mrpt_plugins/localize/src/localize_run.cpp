@@ -27,7 +27,8 @@ void reportLost(const rfir::ir::TLocalizerStep& info, double t, TRunResult& res)
 }  // namespace
 
 TRunResult runLocalization(const TConfig& cfg,
-                           const std::optional<mrpt::poses::CPose2D>& gtStart) {
+                           const std::optional<mrpt::poses::CPose2D>& gtStart,
+                           const TStepObserver& onStep) {
     TRunResult res;
     rfir::common::CRawlogReader reader(cfg.rawlogPath);
     mrpt::poses::CPose2D odo;
@@ -50,6 +51,10 @@ TRunResult runLocalization(const TConfig& cfg,
                                      "has no start pose (a text log's 'start' line)");
         loc->startAt(reader.header().startPose->asTPose());
     }
+    // The view's truth, read only for it (the scoring reads it after the run).
+    std::optional<rfir::common::TPath2D> gt;
+    if (onStep && !cfg.gtPath.empty()) gt = rfir::common::loadTUM(cfg.gtPath);
+    const rfir::common::TPath2D* truth = gt ? &*gt : nullptr;
     const auto t0 = std::chrono::steady_clock::now();
     rfir::common::TRawlogStep st;
     while (reader.next(st)) {
@@ -57,8 +62,13 @@ TRunResult runLocalization(const TConfig& cfg,
         if (st.odometryIncrement) odo = odo + *st.odometryIncrement;
         res.odometry.push_back({st.t, odo});
         if (st.ir) res.irObservations++;
-        if (!loc) continue;
         rfir::ir::TLocalizerStep info;
+        if (!loc) {
+            if (onStep)
+                onStep(
+                    {res.steps - 1, st.t, cfg, nullptr, info, st.ir.get(), odo, truth});
+            continue;
+        }
         try {
             info = loc->step(st.odometryIncrement, st.ir.get(), st.t);
         } catch (const std::exception& e) {
@@ -79,6 +89,8 @@ TRunResult runLocalization(const TConfig& cfg,
         res.gated += info.gated;
         reportLost(info, st.t, res);
         if (info.started) res.path.push_back({st.t, loc->estimate()});
+        if (onStep)
+            onStep({res.steps - 1, st.t, cfg, loc.get(), info, st.ir.get(), odo, truth});
         if (!cfg.quiet && res.steps % 500 == 0)
             std::cerr << "rfir-localize: t = " << st.t << " s, " << res.steps
                       << " instants" << (info.started ? "" : " (waiting for a unique ID)")

@@ -2,14 +2,30 @@
 #pragma once
 
 #include <rfir/slam/slam_config.h>
+#include <rfir/slam/slam_engine.h>
+
+#include <rfir/common/trajectory_io.h>
 
 #include <mrpt/poses/CPose2D.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace rfir::slamapp {
+/** What a live view may read after each step of the run (rfir::view draws
+ * it); everything const: the run's outputs do not depend on a view. */
+struct TStepView {
+    size_t step = 0, steps = 0;  //!< this step's index, and how many there are
+    const rfir::slam::TSlamInput& input;
+    const rfir::slam::CSlamEngine& engine;
+    const rfir::common::TPath2D* truth = nullptr;  //!< ground-truth path, if any
+    std::vector<std::string> events;  //!< relocations and loop closures of this step
+    std::string method;               //!< e.g. "PF-SLAM"
+};
+using TStepObserver = std::function<void(const TStepView&)>;
+
 struct TAppArgs {
     std::string rawlog, outDir;
     std::optional<std::string> method, config, gtPath, gtMap;
@@ -21,6 +37,8 @@ struct TAppArgs {
     std::vector<std::string> sets;
     /** --quiet: no progress or summary on stderr. */
     bool quiet = false;
+    /** Called after each step (--gui); empty: none. */
+    TStepObserver onStep;
 };
 
 /** Runs SLAM and writes every output; returns the process exit code.

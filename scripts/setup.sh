@@ -9,7 +9,9 @@ PKGS=(build-essential cmake git ccache libmrpt-dev mrpt-apps libeigen3-dev
       clang libclang-rt-14-dev    # clang + libFuzzer: scripts/fuzz.sh
       clang-format                # scripts/check_format.sh (.ci/run)
       libceres-dev                # rfir-slam --smooth (graph_smoother_ceres.cpp)
-      nlohmann-json3-dev)         # JSON outputs (header-only, build time only)
+      nlohmann-json3-dev          # JSON outputs (header-only, build time only)
+      libx11-dev                  # the live view's display check (--gui, mrpt_plugins/view)
+      xvfb xauth)                 # xvfb-run: the live view's frame tests, --gui-record headless
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

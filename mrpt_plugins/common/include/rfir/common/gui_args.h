@@ -49,7 +49,7 @@ class CGuiArgs {
 /** The message of --gui in a build without MRPT's gui module. */
 inline std::string guiNotBuiltMessage(const std::string& program) {
     return "--gui: this " + program +
-           " was built without the live view (MRPT's gui module was not found, or "
+           " was built without the live view (MRPT's gui module or X11 was not found, or "
            "RFIR_WITH_GUI=OFF)";
 }
 }  // namespace rfir::common

@@ -119,6 +119,7 @@ std::string CLiveView::keysLine() const {
 }
 
 void CLiveView::handleKeys() {
+    using namespace mrpt::gui;  // the MRPTK_* key codes
     stepOnce_ = false;
     do {
         if (!win_->isOpen()) {
@@ -128,13 +129,16 @@ void CLiveView::handleKeys() {
         while (win_->keyHit()) {
             const int k = win_->getPushedKey();
             if (k == ' ') paused_ = !paused_;
-            if (k == 's' || k == 'S' || k == mrpt::gui::MRPTK_RIGHT) {
+            if (k == 's' || k == 'S' || k == MRPTK_RIGHT || k == MRPTK_NUMPAD_RIGHT) {
                 paused_ = true;
                 stepOnce_ = true;
             }
-            if (k == '+') delayMs_ = delayMs_ <= 10 ? 0 : delayMs_ / 2;
-            if (k == '-') delayMs_ = std::min(2000, delayMs_ == 0 ? 10 : delayMs_ * 2);
-            if (k == 'q' || k == 'Q' || k == mrpt::gui::MRPTK_ESCAPE) {
+            // '=' is '+' without shift on many layouts; the keypad's too.
+            if (k == '+' || k == '=' || k == MRPTK_ADD || k == MRPTK_NUMPAD_ADD)
+                delayMs_ = delayMs_ <= 10 ? 0 : delayMs_ / 2;
+            if (k == '-' || k == MRPTK_SUBTRACT || k == MRPTK_NUMPAD_SUBTRACT)
+                delayMs_ = std::min(2000, delayMs_ == 0 ? 10 : delayMs_ * 2);
+            if (k == 'q' || k == 'Q' || k == MRPTK_ESCAPE) {
                 closed_ = true;  // the run goes on without the view
                 win_.reset();
                 return;

@@ -2,7 +2,8 @@
 # command-line error (exit 2, nothing written), in every build. With the view
 # built: rfir-slam and rfir-localize under xvfb-run record frames that show
 # particles, landmarks, sensors and paths (gui_frames_check counts the view's
-# colours), and their outputs are byte-identical with and without the view.
+# colours), their outputs are byte-identical with and without the view, and
+# the keys pause, step, resume and close the view (gui_keys).
 # Skipped (exit 77) without xvfb-run, and in the sanitizer build.
 add_test(NAME gui_no_display
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/gui.sh ${CMAKE_BINARY_DIR}/bin ${CMAKE_SOURCE_DIR}
@@ -22,4 +23,9 @@ if(RFIR_WITH_GUI)
     set_tests_properties(gui_frames_${prog} PROPERTIES TIMEOUT 180 SKIP_RETURN_CODE 77
       ENVIRONMENT "RFIR_GUI_SANITIZED=${gui_sanitized}")
   endforeach()
+  add_test(NAME gui_keys
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/gui.sh ${CMAKE_BINARY_DIR}/bin
+            ${CMAKE_SOURCE_DIR} keys)
+  set_tests_properties(gui_keys PROPERTIES TIMEOUT 180 SKIP_RETURN_CODE 77
+    ENVIRONMENT "RFIR_GUI_SANITIZED=${gui_sanitized}")
 endif()

@@ -3,6 +3,10 @@
 #   bash tests/gui.sh BIN SRC no-display
 #     --gui and --gui-record without a display: exit 2, a message naming
 #     --gui, nothing on stdout, nothing written.
+#   bash tests/gui.sh BIN SRC keys
+#     under xvfb-run, keys pressed through XTest (tests/gui_keys.py): space
+#     pauses (no new frame), s and the right arrow step once each, space
+#     resumes, q closes the view and the run still finishes.
 #   bash tests/gui.sh BIN SRC slam|localize CHECKER
 #     under xvfb-run: the recorded frames show the scene (CHECKER counts the
 #     view's colours in them), and the run's outputs are byte-identical with
@@ -45,7 +49,6 @@ if [ "$MODE" = no-display ]; then
   exit $((failures > 0))
 fi
 
-CHECK=$4
 if [ "${RFIR_GUI_SANITIZED:-0}" = 1 ]; then
   echo "SKIP: the sanitizer build: MRPT's window (wxWidgets, Mesa's GL) is not instrumented"
   exit 77
@@ -55,6 +58,49 @@ if ! command -v xvfb-run >/dev/null; then
   exit 77
 fi
 XVFB=(xvfb-run -a -s "-screen 0 1024x768x24")
+
+frames() { find frames -name 'frame_*.png' 2>/dev/null | wc -l; }
+# Waits up to $2 s for at least $1 frames.
+wait_frames() {
+  for _ in $(seq $((10 * $2))); do
+    (($(frames) >= $1)) && return 0
+    sleep 0.1
+  done
+  return 1
+}
+if [ "$MODE" = keys-inner ]; then  # under xvfb-run (below)
+  "$BIN/rfir-slam" --rawlog "$DS/rfid_kidnap.rawlog" -q --out-dir out --gui-record frames \
+    --gui-every 5 &
+  pid=$!
+  wait_frames 3 60 || fail "no frame within 60 s"
+  keys() { /usr/bin/python3 "$SRC/tests/gui_keys.py" "$@"; }
+  keys space && sleep 1
+  n=$(frames) && sleep 2
+  (($(frames) == n)) || fail "space did not pause ($n, then $(frames) frames)"
+  keys s && wait_frames $((n + 1)) 10 || fail "s did not step"
+  keys Right && wait_frames $((n + 2)) 10 || fail "the right arrow did not step"
+  sleep 1
+  (($(frames) == n + 2)) || fail "one step each: $n, then $(frames) frames"
+  keys space && wait_frames $((n + 4)) 20 || fail "space did not resume"
+  keys q
+  wait $pid || fail "rfir-slam exit $? after q"
+  total=$(frames)
+  # 2621 instants, one frame every 5: q closed the view before the end.
+  ((total < 500)) || fail "q did not close the view ($total frames)"
+  [ -s out/path.tum ] && [ -s out/stats.json ] || fail "the run did not finish after q"
+  echo "keys: paused at $n frames, stepped twice, resumed, closed at $total frames"
+  exit $((failures > 0))
+fi
+if [ "$MODE" = keys ]; then
+  if [ ! -x /usr/bin/python3 ] || ! /sbin/ldconfig -p | grep libXtst.so.6 >/dev/null; then
+    echo "SKIP: the key test needs /usr/bin/python3 and libXtst.so.6 (Debian libxtst6)"
+    exit 77
+  fi
+  "${XVFB[@]}" bash "$0" "$BIN" "$SRC" keys-inner
+  exit $?
+fi
+
+CHECK=$4
 if [ "$MODE" = slam ]; then
   prog=rfir-slam args=("${SLAM_ARGS[@]}") items=(particles path truth landmark sensor)
   same=(path.tum map.txt errors.json path_map.png)

@@ -16,7 +16,7 @@ class CGuiArgs {
     explicit CGuiArgs(TCLAP::CmdLineInterface& cmd)
         : gui_("", "gui",
                "show the run live in a 3D window (needs a display; keys: space "
-               "pause, s or right arrow one frame, + / - speed, q or Esc close the "
+               "pause, s or right arrow one step, + / - speed, q or Esc close the "
                "view and finish the run)",
                cmd, false),
           record_("", "gui-record",

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The live view's tests (tests/gui.cmake, docs/live-view.md).
 #   bash tests/gui.sh BIN SRC no-display
-#     --gui and --gui-record without a display: exit 2, a message naming
-#     --gui, nothing on stdout, nothing written.
+#     --gui and --gui-record without a display, and --gui-record on a folder
+#     holding frames or one that cannot be created: exit 2, a message naming
+#     the option, nothing on stdout, nothing written.
 #   bash tests/gui.sh BIN SRC keys
 #     under xvfb-run, keys pressed through XTest (tests/gui_keys.py): space
 #     pauses (no new frame), s and the right arrow step once each, space
@@ -45,6 +46,17 @@ if [ "$MODE" = no-display ]; then
       echo "$prog $opt, no display: exit $rc: $(cat stderr)"
       rm -rf out frames stdout stderr
     done
+  done
+  # A recording folder holding frames of another run, or one that cannot be
+  # created: exit 2 naming --gui-record, before any work (display or not).
+  mkdir old && touch old/frame_000001.png
+  for dir in old missing/frames; do
+    "$BIN/rfir-slam" "${SLAM_ARGS[@]}" --out-dir out --gui-record $dir >stdout 2>stderr
+    rc=$?
+    [ $rc -eq 2 ] || fail "--gui-record $dir: exit $rc, not 2"
+    grep -q -- "--gui" stderr || fail "--gui-record $dir: the message does not name it"
+    [ -e out ] || [ -s stdout ] && fail "--gui-record $dir: wrote something"
+    echo "--gui-record $dir: exit $rc: $(cat stderr)"
   done
   exit $((failures > 0))
 fi

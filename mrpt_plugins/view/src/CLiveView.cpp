@@ -5,7 +5,6 @@
 #include <mrpt/gui/CDisplayWindow3D.h>
 #include <mrpt/gui/keycodes.h>
 #include <mrpt/opengl/CFBORender.h>
-#include <mrpt/system/filesystem.h>
 
 #include <X11/Xlib.h>
 
@@ -14,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <thread>
 
 namespace rfir::view {
@@ -38,7 +38,32 @@ void checkDisplay(const std::string& program) {
     XCloseDisplay(x);
 }
 
+namespace {
+/** The recording folder: created at the first frame, so it must be
+ * creatable; one with frames of another run is refused (a video of both
+ * would mix them). */
+void checkRecordDir(const std::string& dir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw rfir::common::CUsageError("--gui-record: '" + dir + "' is not a folder");
+    if (fs::is_directory(dir, ec)) {
+        for (const auto& e : fs::directory_iterator(dir, ec))
+            if (e.path().filename().string().rfind("frame_", 0) == 0)
+                throw rfir::common::CUsageError(
+                    "--gui-record: '" + dir +
+                    "' already holds frames (frame_*.png): give a new or empty folder");
+        return;
+    }
+    const fs::path parent = fs::absolute(dir, ec).parent_path();
+    if (!fs::is_directory(parent, ec))
+        throw rfir::common::CUsageError("--gui-record: the folder '" + parent.string() +
+                                        "' does not exist");
+}
+}  // namespace
+
 CLiveView::CLiveView(const TLiveViewOptions& o) : opts_(o) {
+    if (!o.recordDir.empty()) checkRecordDir(o.recordDir);
     checkDisplay(o.program);
     if (opts_.every == 0) opts_.every = 1;
 }
@@ -50,8 +75,10 @@ bool CLiveView::due(size_t step, bool last) const {
 }
 
 void CLiveView::openWindow() {
-    if (!opts_.recordDir.empty() && !mrpt::system::directoryExists(opts_.recordDir) &&
-        !mrpt::system::createDirectory(opts_.recordDir))
+    std::error_code ec;
+    if (!opts_.recordDir.empty() &&
+        !std::filesystem::create_directories(opts_.recordDir, ec) &&
+        !std::filesystem::is_directory(opts_.recordDir))
         throw std::runtime_error("--gui-record: cannot create the folder '" +
                                  opts_.recordDir + "'");
     win_ = std::make_shared<mrpt::gui::CDisplayWindow3D>(opts_.program + " (live view)",

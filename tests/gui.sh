@@ -49,13 +49,14 @@ if [ "$MODE" = no-display ]; then
   done
   # A recording folder holding frames of another run, or one that cannot be
   # created: exit 2 naming --gui-record, before any work (display or not).
-  mkdir old && touch old/frame_000001.png
-  for dir in old missing/frames; do
+  mkdir old && touch old/frame_000001.png && touch afile
+  for dir in old afile/frames; do
     "$BIN/rfir-slam" "${SLAM_ARGS[@]}" --out-dir out --gui-record $dir >stdout 2>stderr
     rc=$?
     [ $rc -eq 2 ] || fail "--gui-record $dir: exit $rc, not 2"
     grep -q -- "--gui" stderr || fail "--gui-record $dir: the message does not name it"
     [ -e out ] || [ -s stdout ] && fail "--gui-record $dir: wrote something"
+    rm -f stdout stderr
     echo "--gui-record $dir: exit $rc: $(cat stderr)"
   done
   exit $((failures > 0))

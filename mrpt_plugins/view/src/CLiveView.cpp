@@ -39,8 +39,8 @@ void checkDisplay(const std::string& program) {
 }
 
 namespace {
-/** The recording folder: created at the first frame, so it must be
- * creatable; one with frames of another run is refused (a video of both
+/** The recording folder: created at the first frame (with its parents), so
+ * it must be creatable; one with frames of another run is refused (a video of both
  * would mix them). */
 void checkRecordDir(const std::string& dir) {
     namespace fs = std::filesystem;
@@ -55,10 +55,13 @@ void checkRecordDir(const std::string& dir) {
                     "' already holds frames (frame_*.png): give a new or empty folder");
         return;
     }
-    const fs::path parent = fs::absolute(dir, ec).parent_path();
-    if (!fs::is_directory(parent, ec))
-        throw rfir::common::CUsageError("--gui-record: the folder '" + parent.string() +
-                                        "' does not exist");
+    // Created with its parents: the nearest one that exists must be a folder.
+    fs::path up = fs::absolute(dir, ec).parent_path();
+    while (!up.empty() && !fs::exists(up, ec) && up != up.parent_path())
+        up = up.parent_path();
+    if (!fs::is_directory(up, ec))
+        throw rfir::common::CUsageError("--gui-record: cannot create '" + dir + "' ('" +
+                                        up.string() + "' is not a folder)");
 }
 }  // namespace
 

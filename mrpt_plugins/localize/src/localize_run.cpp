@@ -55,6 +55,13 @@ TRunResult runLocalization(const TConfig& cfg,
     std::optional<rfir::common::TPath2D> gt;
     if (onStep && !cfg.gtPath.empty()) gt = rfir::common::loadTUM(cfg.gtPath);
     const rfir::common::TPath2D* truth = gt ? &*gt : nullptr;
+    double viewSeconds = 0;  // not the filter's time
+    const auto view = [&](const TStepView& v) {
+        const auto v0 = std::chrono::steady_clock::now();
+        onStep(v);
+        viewSeconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - v0).count();
+    };
     const auto t0 = std::chrono::steady_clock::now();
     rfir::common::TRawlogStep st;
     while (reader.next(st)) {
@@ -65,8 +72,7 @@ TRunResult runLocalization(const TConfig& cfg,
         rfir::ir::TLocalizerStep info;
         if (!loc) {
             if (onStep)
-                onStep(
-                    {res.steps - 1, st.t, cfg, nullptr, info, st.ir.get(), odo, truth});
+                view({res.steps - 1, st.t, cfg, nullptr, info, st.ir.get(), odo, truth});
             continue;
         }
         try {
@@ -90,14 +96,15 @@ TRunResult runLocalization(const TConfig& cfg,
         reportLost(info, st.t, res);
         if (info.started) res.path.push_back({st.t, loc->estimate()});
         if (onStep)
-            onStep({res.steps - 1, st.t, cfg, loc.get(), info, st.ir.get(), odo, truth});
+            view({res.steps - 1, st.t, cfg, loc.get(), info, st.ir.get(), odo, truth});
         if (!cfg.quiet && res.steps % 500 == 0)
             std::cerr << "rfir-localize: t = " << st.t << " s, " << res.steps
                       << " instants" << (info.started ? "" : " (waiting for a unique ID)")
                       << "\n";
     }
     res.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() -
+        viewSeconds;
     if (cfg.odometryOnly) res.path = res.odometry;
     if (loc) res.emitterHealth = loc->emitterHealth();
     return res;

@@ -370,10 +370,12 @@ int runSlamApp(const TAppArgs& args) {
     const auto report = [&](const std::vector<double>& times, size_t& done,
                             const char* what) {
         for (; done < times.size(); done++) {
-            std::ostringstream line;
+            logStream(a) << "rfir-slam: " << what << " at t = " << std::fixed
+                         << std::setprecision(2) << times[done] << " s\n"
+                         << std::defaultfloat;
+            std::ostringstream line;  // the same line for the view
             line << what << " at t = " << std::fixed << std::setprecision(2)
                  << times[done] << " s";
-            logStream(a) << "rfir-slam: " << line.str() << "\n";
             events.push_back(line.str());
         }
     };

@@ -16,6 +16,7 @@ declare -A RANK=(
   [rfir_models]=1 [rfir_observations]=2 [rfir_io]=3 [rfir_maps]=3 [rfir_slam]=4 [rfir_ir]=4
   [rfir_appcommon]=5 [rfir_sim]=6 [rfir_eval]=6 [rfir_localize_core]=7
   [rfir_plain]=6 [rfir_slamapp]=7 [rfir_evalapp]=7 [rfir_experiments]=7 [rfir_bench]=7 [rfir_irexp]=8 [rfir_mrpt_plugin]=8 [rfir_python]=9
+  [rfir_view]=8
 )
 
 cmake -S "$ROOT" -B "$WORK/build" -DRFIR_BUILD_TESTS=OFF \
@@ -39,6 +40,8 @@ done < <(sed -n 's|.*// \([^ ]*\) -> \([^ ]*\)$|\1 \2|p' "$WORK/rfir.dot")
 for lib in "${!RANK[@]}"; do
   # The Python module is built only where pybind11 is found (RFIR_WITH_PYTHON).
   [[ $lib == rfir_python ]] && ! grep -q "pybind11_DIR:PATH=/" "$WORK/build/CMakeCache.txt" && continue
+  # The live view is built only with MRPT's gui module (RFIR_WITH_GUI).
+  [[ $lib == rfir_view ]] && grep -q "live view (--gui): OFF" "$WORK/configure.log" && continue
   grep -q "label = \"$lib[\\\"]" "$WORK/rfir.dot" ||
     { echo "check_layers: library $lib is not in the build graph" >&2; fail=1; }
 done

@@ -11,7 +11,9 @@ PKGS=(build-essential cmake git ccache libmrpt-dev mrpt-apps libeigen3-dev
       libceres-dev                # rfir-slam --smooth (graph_smoother_ceres.cpp)
       nlohmann-json3-dev          # JSON outputs (header-only, build time only)
       pybind11-dev python3-dev python3-numpy  # the Python module (docs/python.md)
-      python3-matplotlib)         # docs/python.md's example (ctest python_docs_example)
+      python3-matplotlib          # docs/python.md's example (ctest python_docs_example)
+      libx11-dev                  # the live view's display check (--gui, mrpt_plugins/view)
+      xvfb xauth)                 # xvfb-run: the live view's frame tests, --gui-record headless
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

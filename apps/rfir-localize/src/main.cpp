@@ -6,6 +6,7 @@
 #include <rfir/localize/localize_run.h>
 
 #include <rfir/common/cli.h>
+#include <rfir/common/gui_args.h>
 #include <rfir/common/ini_key_docs.h>
 #include <rfir/common/ini_override.h>
 #include <rfir/eval/input_formats.h>
@@ -14,6 +15,9 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/core/exceptions.h>
+#ifdef RFIR_WITH_GUI
+#include <rfir/view/CLiveView.h>
+#endif
 
 #include <algorithm>
 #include <filesystem>
@@ -36,8 +40,8 @@ std::string joinArgs(int argc, char** argv) {
     return s;
 }
 
-int run(rfir::localize::TConfig& cfg, const std::string& emitters,
-        const std::string& cmd) {
+int run(rfir::localize::TConfig& cfg, const std::string& emitters, const std::string& cmd,
+        const rfir::localize::TStepObserver& onStep) {
     namespace fs = std::filesystem;
     const auto gtStart = rfir::localize::prepareRun(cfg, emitters);
     std::error_code ec;
@@ -49,7 +53,7 @@ int run(rfir::localize::TConfig& cfg, const std::string& emitters,
                   << ", " << (cfg.odometryOnly ? "odometry only" : "M = ")
                   << (cfg.odometryOnly ? "" : std::to_string(cfg.params.numParticles))
                   << ", seed " << cfg.seed << "\n";
-    const auto res = rfir::localize::runLocalization(cfg, gtStart);
+    const auto res = rfir::localize::runLocalization(cfg, gtStart, onStep);
     const std::string table = rfir::localize::writeOutputs(cfg, res, cmd);
     if (!cfg.quiet) {
         std::cerr << "rfir-localize: " << res.steps << " instants, " << res.used << " of "
@@ -117,9 +121,11 @@ int main(int argc, char** argv) {
         false, "SECTION.KEY=VALUE", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd);
     TCLAP::SwitchArg helpKeys("", "help-keys", rfir::common::kHelpKeysHelp, cmd);
+    rfir::common::CGuiArgs gui(cmd);
     try {
         if (const auto code = rfir::common::parseCommandLine(cmd, argc, argv))
             return *code;
+        gui.check();
         rfir::obs::registerAllClasses();
         rfir::maps::registerIRClasses();
         rfir::localize::TConfig cfg;
@@ -132,7 +138,20 @@ int main(int argc, char** argv) {
         cfg.quiet = quiet.getValue();
         cfg.overrides = sets.getValue();
         if (helpKeys.getValue()) return listKeys(cfg, emitters.getValue());
-        return run(cfg, emitters.getValue(), joinArgs(argc, argv));
+        rfir::localize::TStepObserver onStep;
+#ifdef RFIR_WITH_GUI
+        std::unique_ptr<rfir::view::CLiveView> view;  // checks the display first
+        if (gui.requested()) {
+            view = std::make_unique<rfir::view::CLiveView>(rfir::view::TLiveViewOptions{
+                "rfir-localize", gui.recordDir(), gui.every()});
+            onStep = view->localizeObserver();
+        }
+#else
+        if (gui.requested())
+            throw rfir::common::CUsageError(
+                rfir::common::guiNotBuiltMessage("rfir-localize"));
+#endif
+        return run(cfg, emitters.getValue(), joinArgs(argc, argv), onStep);
     } catch (const rfir::common::CUsageError& e) {  // thrown before any work
         std::cerr << "rfir-localize: error: " << e.what() << "\n";
         return rfir::common::kUsageExitCode;

@@ -2,10 +2,15 @@
 #include <rfir/slamapp/slam_app.h>
 
 #include <rfir/common/cli.h>
+#include <rfir/common/gui_args.h>
 #include <rfir/common/ini_key_docs.h>
+#ifdef RFIR_WITH_GUI
+#include <rfir/view/CLiveView.h>
+#endif
 
 #include <algorithm>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 int main(int argc, char** argv) {
@@ -18,7 +23,9 @@ int main(int argc, char** argv) {
         TCLAP::CmdLine cmd(
             "rfir-slam: PF-SLAM, PS-SLAM or FastSLAM on a project rawlog. Writes "
             "path.tum, map.txt, settings.ini, stats.json, path_map.png, scene.3Dscene "
-            "(and errors.json, error_time.png with ground truth) into --out-dir.",
+            "(and errors.json, error_time.png with ground truth) into --out-dir. --gui "
+            "shows the run live; --gui-record DIR also writes its frames as PNG files "
+            "(docs/live-view.md).",
             ' ', RFIR_VERSION);
         TCLAP::ValueArg<std::string> rawlog(
             "", "rawlog", std::string("input rawlog") + rfir::common::kRawlogClassesHelp,
@@ -61,8 +68,20 @@ int main(int argc, char** argv) {
         TCLAP::SwitchArg quiet("q", "quiet", rfir::common::kQuietHelp, cmd, false);
         TCLAP::SwitchArg helpKeys("", "help-keys", rfir::common::kHelpKeysHelp, cmd,
                                   false);
+        rfir::common::CGuiArgs gui(cmd);
         rfir::common::foldOptionValues(args, "--start", 3);
         if (const auto code = rfir::common::parseCommandLine(cmd, args)) return *code;
+        gui.check();
+#ifdef RFIR_WITH_GUI
+        std::unique_ptr<rfir::view::CLiveView> view;  // checks the display first
+        if (gui.requested() && !listKeys)
+            view = std::make_unique<rfir::view::CLiveView>(
+                rfir::view::TLiveViewOptions{"rfir-slam", gui.recordDir(), gui.every()});
+#else
+        if (gui.requested())
+            throw rfir::common::CUsageError(
+                rfir::common::guiNotBuiltMessage("rfir-slam"));
+#endif
 
         rfir::slamapp::TAppArgs a;
         if (start.isSet())
@@ -70,7 +89,7 @@ int main(int argc, char** argv) {
         a.rawlog = rawlog.getValue();
         a.outDir = outDir.getValue();
         // runSlam writes nothing without a folder (the Python module's runs).
-        if (a.outDir.empty())
+        if (a.outDir.empty() && !listKeys)
             throw rfir::common::CUsageError("--out-dir: an empty folder name");
         if (method.isSet()) a.method = method.getValue();
         if (config.isSet()) a.config = config.getValue();
@@ -81,6 +100,9 @@ int main(int argc, char** argv) {
         a.sets = sets.getValue();
         a.quiet = quiet.getValue();
         a.helpKeys = helpKeys.getValue();
+#ifdef RFIR_WITH_GUI
+        if (view) a.onStep = view->slamObserver();
+#endif
         return rfir::slamapp::runSlamApp(a);
     } catch (const rfir::common::CUsageError& e) {  // thrown before any work
         std::cerr << "rfir-slam: error: " << e.what() << "\n";

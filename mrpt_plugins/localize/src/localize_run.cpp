@@ -58,7 +58,8 @@ std::optional<mrpt::poses::CPose2D> prepareRun(TConfig& cfg,
 }
 
 TRunResult runLocalization(const TConfig& cfg,
-                           const std::optional<mrpt::poses::CPose2D>& gtStart) {
+                           const std::optional<mrpt::poses::CPose2D>& gtStart,
+                           const TStepObserver& onStep) {
     TRunResult res;
     rfir::common::CRawlogReader reader(cfg.rawlogPath);
     mrpt::poses::CPose2D odo;
@@ -81,6 +82,17 @@ TRunResult runLocalization(const TConfig& cfg,
                                      "has no start pose (a text log's 'start' line)");
         loc->startAt(reader.header().startPose->asTPose());
     }
+    // The view's truth, read only for it (the scoring reads it after the run).
+    std::optional<rfir::common::TPath2D> gt;
+    if (onStep && !cfg.gtPath.empty()) gt = rfir::common::loadTUM(cfg.gtPath);
+    const rfir::common::TPath2D* truth = gt ? &*gt : nullptr;
+    double viewSeconds = 0;  // not the filter's time
+    const auto view = [&](const TStepView& v) {
+        const auto v0 = std::chrono::steady_clock::now();
+        onStep(v);
+        viewSeconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - v0).count();
+    };
     const auto t0 = std::chrono::steady_clock::now();
     rfir::common::TRawlogStep st;
     while (reader.next(st)) {
@@ -88,8 +100,12 @@ TRunResult runLocalization(const TConfig& cfg,
         if (st.odometryIncrement) odo = odo + *st.odometryIncrement;
         res.odometry.push_back({st.t, odo});
         if (st.ir) res.irObservations++;
-        if (!loc) continue;
         rfir::ir::TLocalizerStep info;
+        if (!loc) {
+            if (onStep)
+                view({res.steps - 1, st.t, cfg, nullptr, info, st.ir.get(), odo, truth});
+            continue;
+        }
         try {
             info = loc->step(st.odometryIncrement, st.ir.get(), st.t);
         } catch (const std::exception& e) {
@@ -110,13 +126,16 @@ TRunResult runLocalization(const TConfig& cfg,
         res.gated += info.gated;
         reportLost(info, st.t, res);
         if (info.started) res.path.push_back({st.t, loc->estimate()});
+        if (onStep)
+            view({res.steps - 1, st.t, cfg, loc.get(), info, st.ir.get(), odo, truth});
         if (!cfg.quiet && res.steps % 500 == 0)
             std::cerr << "rfir-localize: t = " << st.t << " s, " << res.steps
                       << " instants" << (info.started ? "" : " (waiting for a unique ID)")
                       << "\n";
     }
     res.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() -
+        viewSeconds;
     if (cfg.odometryOnly) res.path = res.odometry;
     if (loc) res.emitterHealth = loc->emitterHealth();
     return res;

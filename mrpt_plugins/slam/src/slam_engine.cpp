@@ -47,6 +47,11 @@ class CFastSLAMEngine : public CSlamEngine {
         pose_ = pf_.meanPose();
     }
     mrpt::poses::CPose2D pose() const override { return pose_; }
+    std::vector<mrpt::math::TPose2D> particlePoses() const override {
+        std::vector<mrpt::math::TPose2D> out;
+        for (const auto& p : pf_.m_particles) out.push_back(p.d.pose.asTPose());
+        return out;
+    }
     std::vector<TLandmarkOut> landmarks() const override {
         std::vector<TLandmarkOut> out;
         for (const auto& e : pf_.landmarks())

@@ -84,6 +84,11 @@ class CTagMapEngine : public CSlamEngine, private CRobotPoseParticles::IStepMode
     void step(const TSlamInput& in) override;
     mrpt::poses::CPose2D pose() const override { return pose_; }
     std::vector<TLandmarkOut> landmarks() const override;
+    std::vector<mrpt::math::TPose2D> particlePoses() const override {
+        std::vector<mrpt::math::TPose2D> out;
+        for (const auto& p : pf_.m_particles) out.push_back(p.d.asTPose());
+        return out;
+    }
     const std::vector<double>& resetTimes() const override { return resetTimes_; }
     const std::vector<double>& loopClosureTimes() const override { return closureTimes_; }
 

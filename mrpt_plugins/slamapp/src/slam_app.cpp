@@ -400,17 +400,30 @@ TSlamAppResult runSlam(const TAppArgs& args) {
     // Each sensor resetting and loop closure gets a line when it happens
     // (not only a count).
     size_t resets = 0, closures = 0;
+    std::vector<std::string> events;  // this step's, for the view
     const auto report = [&](const std::vector<double>& times, size_t& done,
                             const char* what) {
-        for (; done < times.size(); done++)
+        for (; done < times.size(); done++) {
             logStream(a) << "rfir-slam: " << what << " at t = " << std::fixed
                          << std::setprecision(2) << times[done] << " s\n"
                          << std::defaultfloat;
+            std::ostringstream line;  // the same line for the view
+            line << what << " at t = " << std::fixed << std::setprecision(2)
+                 << times[done] << " s";
+            events.push_back(line.str());
+        }
     };
+    // The view's truth is read here only for it (loadTruth comes after the run).
+    std::optional<TPath2D> viewTruth;
+    if (a.onStep && a.gtPath) viewTruth = rfir::common::loadTUM(*a.gtPath);
     const auto run = rfir::slam::runEngine(*engine, start, data.inputs, [&](size_t i) {
         progress.update(i);
+        events.clear();
         report(engine->resetTimes(), resets, "kidnap detected, sensor resetting");
         report(engine->loopClosureTimes(), closures, "loop closure by smoothing");
+        if (a.onStep)
+            a.onStep({i, n, data.inputs[i], *engine, viewTruth ? &*viewTruth : nullptr,
+                      events, rfir::slam::methodName(cfg.slam.method)});
     });
     progress.finish();
 

@@ -139,6 +139,12 @@ class CIRLocalizer {
 
     /** Weighted mean of the particles (eq. 5.4). */
     mrpt::poses::CPose2D estimate() const;
+    /** The particles now (for a live view). */
+    std::vector<mrpt::math::TPose2D> particlePoses() const {
+        std::vector<mrpt::math::TPose2D> out;
+        for (const auto& p : m_pdf.m_particles) out.push_back(p.d);
+        return out;
+    }
     /** Per emitter (index as the map's emitters()): readings, gated, checks. */
     const std::vector<TEmitterHealth>& emitterHealth() const {
         return m_monitor.health();

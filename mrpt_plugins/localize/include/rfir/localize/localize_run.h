@@ -5,6 +5,7 @@
 
 #include <rfir/common/trajectory_io.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -38,10 +39,25 @@ struct TRunResult {
  * emitter_file, the rawlog a file, cfg.gtPath (else <stem>.gt.tum beside the
  * rawlog when there) read. Returns the ground truth's first pose, if any. */
 std::optional<mrpt::poses::CPose2D> prepareRun(TConfig& cfg, const std::string& emitters);
+/** What a live view may read after each instant (rfir::view draws it);
+ * everything const: the run's outputs do not depend on a view. */
+struct TStepView {
+    size_t step = 0;  //!< this instant's index
+    double t = 0;
+    const TConfig& cfg;
+    const rfir::ir::CIRLocalizer* localizer;  //!< null: --odometry-only
+    const rfir::ir::TLocalizerStep& info;
+    const rfir::obs::CObservationIRSignals* ir;    //!< this instant's, may be null
+    const mrpt::poses::CPose2D& odometry;          //!< dead reckoning
+    const rfir::common::TPath2D* truth = nullptr;  //!< ground-truth path, if any
+};
+using TStepObserver = std::function<void(const TStepView&)>;
 
 /** Runs the filter (or only dead reckoning) over cfg.rawlogPath. `gtStart`:
- * the ground truth's first pose, if any. Progress on stderr unless quiet. */
+ * the ground truth's first pose, if any. Progress on stderr unless quiet.
+ * `onStep` (--gui), if set, after each instant. */
 TRunResult runLocalization(const TConfig& cfg,
-                           const std::optional<mrpt::poses::CPose2D>& gtStart);
+                           const std::optional<mrpt::poses::CPose2D>& gtStart,
+                           const TStepObserver& onStep = {});
 
 }  // namespace rfir::localize

@@ -51,6 +51,8 @@ class CSlamEngine {
     /** The current robot estimate. */
     virtual mrpt::poses::CPose2D pose() const = 0;
     virtual std::vector<TLandmarkOut> landmarks() const = 0;
+    /** The robot particles now (for a live view); empty: the method keeps none. */
+    virtual std::vector<mrpt::math::TPose2D> particlePoses() const { return {}; }
     /** Times (TSlamInput::t) of the sensor resettings done so far
      * (kidnapping recovery), in order. */
     virtual const std::vector<double>& resetTimes() const {

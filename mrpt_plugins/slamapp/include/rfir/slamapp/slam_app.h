@@ -4,14 +4,30 @@
 #include <rfir/common/map_io.h>
 #include <rfir/common/trajectory_io.h>
 #include <rfir/slam/slam_config.h>
+#include <rfir/slam/slam_engine.h>
+
+#include <rfir/common/trajectory_io.h>
 
 #include <mrpt/poses/CPose2D.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace rfir::slamapp {
+/** What a live view may read after each step of the run (rfir::view draws
+ * it); everything const: the run's outputs do not depend on a view. */
+struct TStepView {
+    size_t step = 0, steps = 0;  //!< this step's index, and how many there are
+    const rfir::slam::TSlamInput& input;
+    const rfir::slam::CSlamEngine& engine;
+    const rfir::common::TPath2D* truth = nullptr;  //!< ground-truth path, if any
+    std::vector<std::string> events;  //!< relocations and loop closures of this step
+    std::string method;               //!< e.g. "PF-SLAM"
+};
+using TStepObserver = std::function<void(const TStepView&)>;
+
 struct TAppArgs {
     /** outDir empty: no files written (runSlam only). */
     std::string rawlog, outDir;
@@ -26,6 +42,8 @@ struct TAppArgs {
     bool quiet = false;
     /** --help-keys: list the configuration's INI keys on stdout, run nothing. */
     bool helpKeys = false;
+    /** Called after each step (--gui); empty: none. */
+    TStepObserver onStep;
 };
 
 /** One run in memory: what path.tum, map.txt, stats.json and errors.json

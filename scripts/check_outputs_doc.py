@@ -23,9 +23,10 @@ import argparse
 import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
+
+from docs_numbers import Sources
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PAGE = "docs/outputs.md"
@@ -65,15 +66,11 @@ def compare(what, written, page):
             [f"{what}: '{k}' is in {PAGE} but no run wrote it" for k in stale])
 
 
-class Runner:
-    def __init__(self, bindir, tmp):
-        self.bin, self.tmp = bindir, tmp
+class Runner(Sources):
+    """docs_numbers' command runner: a program of --bin, quiet, in ROOT."""
 
     def __call__(self, prog, *args):
-        cmd = [os.path.join(self.bin, prog), *args, "-q"]
-        r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
-        if r.returncode != 0:
-            raise RuntimeError(f"{' '.join(cmd)} exited {r.returncode}:\n{r.stdout}{r.stderr}")
+        self.run([self.prog(prog), *args, "-q"])
 
     def out(self, name):
         return os.path.join(self.tmp, name)

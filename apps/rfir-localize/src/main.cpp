@@ -9,8 +9,6 @@
 #include <rfir/common/gui_args.h>
 #include <rfir/common/ini_key_docs.h>
 #include <rfir/common/ini_override.h>
-#include <rfir/eval/input_formats.h>
-#include <rfir/eval/metrics.h>
 #include <rfir/obs/registerAllClasses.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -20,7 +18,6 @@
 #endif
 
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 
 namespace {
@@ -42,31 +39,8 @@ std::string joinArgs(int argc, char** argv) {
 
 int run(rfir::localize::TConfig& cfg, const std::string& emitters, const std::string& cmd,
         const rfir::localize::TStepObserver& onStep) {
-    namespace fs = std::filesystem;
-    const auto gtStart = rfir::localize::prepareRun(cfg, emitters);
-    std::error_code ec;
-    fs::create_directories(cfg.outDir, ec);
-    if (!fs::is_directory(cfg.outDir))
-        throw std::runtime_error(cfg.outDir + ": cannot create the output directory");
-    if (!cfg.quiet)
-        std::cerr << "rfir-localize: " << cfg.rawlogPath << ", " << cfg.map->asString()
-                  << ", " << (cfg.odometryOnly ? "odometry only" : "M = ")
-                  << (cfg.odometryOnly ? "" : std::to_string(cfg.params.numParticles))
-                  << ", seed " << cfg.seed << "\n";
-    const auto res = rfir::localize::runLocalization(cfg, gtStart, onStep);
-    const std::string table = rfir::localize::writeOutputs(cfg, res, cmd);
-    if (!cfg.quiet) {
-        std::cerr << "rfir-localize: " << res.steps << " instants, " << res.used << " of "
-                  << res.readings << " readings used, " << res.unknownIds
-                  << " unknown IDs, first unique ID at "
-                  << (res.firstUniqueTime ? std::to_string(*res.firstUniqueTime) + " s"
-                                          : "never")
-                  << ", " << res.resetEvents << " sensor resets\n";
-        std::cout << table;
-    }
-    // A warning, also under --quiet.
-    if (!cfg.odometryOnly && res.path.empty())
-        std::cerr << "rfir-localize: warning: no unique-ID reading: no estimate\n";
+    const auto job = rfir::localize::runLocalizeJob(cfg, emitters, cmd, onStep);
+    if (!cfg.quiet) std::cout << job.summary.errorTable;
     return 0;
 }
 

@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace rfir::localize {
@@ -168,7 +169,21 @@ std::string plot(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
 }
 }  // namespace
 
-std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
+namespace {
+TRunSummary summaryOf(const TConfig& cfg, const TRunResult& res, const TEvals& ev,
+                      const std::vector<std::string>& files) {
+    TRunSummary s;
+    if (!ev.rows.empty()) {
+        s.errorTable = rfir::eval::formatErrorTable(ev.rows);
+        s.errorsJson = rfir::eval::toJson(ev.rows[0]);
+    }
+    s.statsJson = statsJson(cfg, res, ev,
+                            rfir::common::runIdentityJson(cfg.seed, cfg.iniPath, files));
+    return s;
+}
+}  // namespace
+
+TRunSummary writeOutputs(const TConfig& cfg, const TRunResult& res,
                          const std::string& commandLine) {
     // One set per run: staged beside --out-dir and renamed into place, so a
     // stale errors.json of a run with ground truth cannot outlive it. The
@@ -179,8 +194,6 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
          "path_map.png", "error_time.png", "emitter_health.txt"},
         "rfir-localize");
     const TEvals ev = evaluate(cfg, res);
-    std::string table;
-    if (!ev.rows.empty()) table = rfir::eval::formatErrorTable(ev.rows);
     rfir::common::saveTUM(out.file("path.tum"), res.path);
     for (size_t i = 0; i < ev.rows.size(); i++)
         rfir::common::writeFileAtomically(
@@ -194,28 +207,51 @@ std::string writeOutputs(const TConfig& cfg, const TRunResult& res,
     const auto files = out.files();
     std::string list;
     for (const auto& f : files) list += " " + f;
-    const std::string id = rfir::common::runIdentityJson(cfg.seed, cfg.iniPath, files);
-    rfir::common::writeFileAtomically(
-        stats, [&](std::ostream& o) { o << statsJson(cfg, res, ev, id); });
+    const TRunSummary s = summaryOf(cfg, res, ev, files);
+    rfir::common::writeFileAtomically(stats, [&](std::ostream& o) { o << s.statsJson; });
     rfir::common::writeFileAtomically(settings, [&](std::ostream& o) {
         o << "# rfir-localize " << rfir::common::rfirVersion() << "; INI " << cfg.iniPath
           << " (md5 " << rfir::common::fileMD5(cfg.iniPath) << "); files:" << list << "\n"
           << rfir::common::annotateIni(settingsIni(cfg, commandLine), "rfir-localize");
     });
     out.commit();
-    return table;
+    return s;
 }
 
 TRunSummary summarize(const TConfig& cfg, const TRunResult& res) {
-    const TEvals ev = evaluate(cfg, res);
-    TRunSummary s;
-    if (!ev.rows.empty()) {
-        s.errorTable = rfir::eval::formatErrorTable(ev.rows);
-        s.errorsJson = rfir::eval::toJson(ev.rows[0]);
+    return summaryOf(cfg, res, evaluate(cfg, res), {});
+}
+
+TLocalizeJob runLocalizeJob(TConfig& cfg, const std::string& emitters,
+                            const std::string& commandLine, const TStepObserver& onStep) {
+    const auto gtStart = prepareRun(cfg, emitters);
+    if (!cfg.outDir.empty()) {
+        std::error_code ec;
+        fs::create_directories(cfg.outDir, ec);
+        if (!fs::is_directory(cfg.outDir))
+            throw std::runtime_error(cfg.outDir + ": cannot create the output directory");
     }
-    s.statsJson =
-        statsJson(cfg, res, ev, rfir::common::runIdentityJson(cfg.seed, cfg.iniPath, {}));
-    return s;
+    if (!cfg.quiet)
+        std::cerr << "rfir-localize: " << cfg.rawlogPath << ", " << cfg.map->asString()
+                  << ", " << (cfg.odometryOnly ? "odometry only" : "M = ")
+                  << (cfg.odometryOnly ? "" : std::to_string(cfg.params.numParticles))
+                  << ", seed " << cfg.seed << "\n";
+    TLocalizeJob job;
+    job.run = runLocalization(cfg, gtStart, onStep);
+    const TRunResult& res = job.run;
+    job.summary =
+        cfg.outDir.empty() ? summarize(cfg, res) : writeOutputs(cfg, res, commandLine);
+    if (!cfg.quiet)
+        std::cerr << "rfir-localize: " << res.steps << " instants, " << res.used << " of "
+                  << res.readings << " readings used, " << res.unknownIds
+                  << " unknown IDs, first unique ID at "
+                  << (res.firstUniqueTime ? std::to_string(*res.firstUniqueTime) + " s"
+                                          : "never")
+                  << ", " << res.resetEvents << " sensor resets\n";
+    // A warning, also under --quiet.
+    if (!cfg.odometryOnly && res.path.empty())
+        std::cerr << "rfir-localize: warning: no unique-ID reading: no estimate\n";
+    return job;
 }
 
 }  // namespace rfir::localize

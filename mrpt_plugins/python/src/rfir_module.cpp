@@ -15,8 +15,6 @@
 
 #include <pybind11/stl.h>
 
-#include <filesystem>
-
 namespace rfir::python {
 namespace {
 std::optional<mrpt::poses::CPose2D> startFrom(
@@ -88,27 +86,19 @@ py::dict localize(const std::string& rawlog, const std::string& config, uint64_t
     cfg.odometryOnly = odometryOnly;
     cfg.quiet = quiet;
     cfg.outDir = outDir;
-    rfir::localize::TRunResult res;
-    rfir::localize::TRunSummary sum;
+    rfir::localize::TLocalizeJob job;
     {
         py::gil_scoped_release nogil;
-        cleanly([&] {
-            const auto gtStart = rfir::localize::prepareRun(cfg, emitters);
-            res = rfir::localize::runLocalization(cfg, gtStart);
-            if (!outDir.empty()) {
-                std::filesystem::create_directories(outDir);
-                rfir::localize::writeOutputs(cfg, res, "rfir.localize");
-            }
-            sum = rfir::localize::summarize(cfg, res);
-            return 0;
+        job = cleanly([&] {
+            return rfir::localize::runLocalizeJob(cfg, emitters, "rfir.localize");
         });
     }
     py::dict d;
-    d["path"] = pathToArray(res.path);
-    d["odometry"] = pathToArray(res.odometry);
-    d["stats_json"] = sum.statsJson;
-    d["errors_json"] = sum.errorsJson;
-    d["error_table"] = sum.errorTable;
+    d["path"] = pathToArray(job.run.path);
+    d["odometry"] = pathToArray(job.run.odometry);
+    d["stats_json"] = job.summary.statsJson;
+    d["errors_json"] = job.summary.errorsJson;
+    d["error_table"] = job.summary.errorTable;
     return d;
 }
 

@@ -363,13 +363,18 @@ void fillResult(TSlamAppResult& res, TScored main, std::optional<TScored> smooth
     res.path = std::move(main.path);
     res.map = std::move(main.map);
 }
+
+/** The run's INI: --config, else the method's stock one; a bad --method is
+ * refused before anything is read. */
+std::string iniOf(const TAppArgs& a) {
+    if (a.method) rfir::slam::parseMethod(*a.method);
+    return a.config ? *a.config : rfir::common::slamIniPath(a.method.value_or("pf"));
+}
 }  // namespace
 
 TSlamAppResult runSlam(const TAppArgs& args) {
     TAppArgs a = args;
-    if (a.method) rfir::slam::parseMethod(*a.method);  // reject before reading anything
-    const std::string ini =
-        a.config ? *a.config : rfir::common::slamIniPath(a.method.value_or("pf"));
+    const std::string ini = iniOf(a);
     rfir::slam::TSlamConfig cfg = loadConfig(ini, a);
     cfg.seed = a.seed;
     findGroundTruth(a);
@@ -458,9 +463,7 @@ TSlamAppResult runSlam(const TAppArgs& args) {
 
 int runSlamApp(const TAppArgs& a) {
     if (a.helpKeys) {
-        if (a.method) rfir::slam::parseMethod(*a.method);
-        const std::string ini =
-            a.config ? *a.config : rfir::common::slamIniPath(a.method.value_or("pf"));
+        const std::string ini = iniOf(a);
         std::cout << rfir::common::describeKeys(
             "rfir-slam", [&] { return rfir::slam::dumpSlamConfig(loadConfig(ini, a)); });
         return 0;

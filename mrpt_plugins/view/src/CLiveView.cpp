@@ -92,16 +92,11 @@ void CLiveView::openWindow() {
 }
 
 void CLiveView::fitCamera(const TFrame& f) {
-    double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
-    const auto grow = [&](double x, double y) {
-        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x),
-        y1 = std::max(y1, y);
-    };
-    for (const auto& p : f.extent) grow(p.x, p.y);
-    for (const auto& p : f.path) grow(p.x, p.y);
-    for (const auto& l : f.landmarks) grow(l.x, l.y);
-    for (const auto& p : f.particles) grow(p.x, p.y);
-    if (x0 > x1) return;
+    auto b = mrpt::math::TBoundingBox::PlusMinusInfinity();
+    growBox(b, f.extent), growBox(b, f.path), growBox(b, f.landmarks);
+    growBox(b, f.particles);
+    if (b.min.x > b.max.x) return;
+    const double x0 = b.min.x, y0 = b.min.y, x1 = b.max.x, y1 = b.max.y;
     // MRPT's orthographic view shows a width of zoom / kZoomPerWidth (m).
     constexpr double kZoomPerWidth = 1.5;
     const double aspect = double(opts_.height) / opts_.width;

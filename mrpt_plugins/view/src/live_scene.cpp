@@ -36,15 +36,10 @@ mrpt::opengl::CSetOfLines::Ptr lines(const mrpt::img::TColor& c, float width) {
 
 /** The floor grid over what the frame shows, 1 m cells. */
 void addGrid(const TFrame& f, mrpt::opengl::COpenGLScene& scene) {
-    double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
-    const auto grow = [&](double x, double y) {
-        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x),
-        y1 = std::max(y1, y);
-    };
-    for (const auto& p : f.truth) grow(p.x, p.y);
-    for (const auto& p : f.path) grow(p.x, p.y);
-    for (const auto& l : f.landmarks) grow(l.x, l.y);
-    if (x0 > x1) x0 = y0 = -1, x1 = y1 = 1;
+    auto b = mrpt::math::TBoundingBox::PlusMinusInfinity();
+    growBox(b, f.truth), growBox(b, f.path), growBox(b, f.landmarks);
+    if (b.min.x > b.max.x) b.min = {-1, -1, 0}, b.max = {1, 1, 0};
+    const double x0 = b.min.x, y0 = b.min.y, x1 = b.max.x, y1 = b.max.y;
     auto grid =
         mrpt::opengl::CGridPlaneXY::Create(std::floor(x0) - 1, std::ceil(x1) + 1,
                                            std::floor(y0) - 1, std::ceil(y1) + 1, 0, 1);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <mrpt/img/TColor.h>
+#include <mrpt/math/TBoundingBox.h>
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/opengl/COpenGLScene.h>
@@ -42,6 +43,12 @@ struct TFrame {
     /** Points the camera keeps in view, not drawn (the whole true path). */
     std::vector<mrpt::math::TPoint2D> extent;
 };
+
+/** Grows `box` (MRPT's, z = 0) by every point (anything with x and y). */
+template <class Points>
+void growBox(mrpt::math::TBoundingBox& box, const Points& points) {
+    for (const auto& p : points) box.updateWithPoint({p.x, p.y, 0});
+}
 
 /** Fills `scene` with the frame (clears it first). */
 void drawFrame(const TFrame& f, mrpt::opengl::COpenGLScene& scene);
